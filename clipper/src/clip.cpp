@@ -1,0 +1,72 @@
+// The orchestrator: validate, phase 1 (variant-specific), phase 2, phase 3, clean-up.
+#include "ghclip/clip.h"
+
+#include <chrono>
+#include <string>
+
+#include "all_pairs_search.h"
+#include "cleanup.h"
+#include "ghclip/errors.h"
+#include "ghclip/measure.h"
+#include "ghclip/validate.h"
+#include "naive_arithmetic.h"
+#include "phase1_intersections.h"
+#include "phase3_tracing.h"
+#include "vertex_graph.h"
+
+namespace gh {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+detail::Phase1Result runPhase1(const Region& subject, const Region& clip, Variant variant,
+                               Stats& stats) {
+  switch (variant) {
+    case Variant::Naive:
+      return detail::findIntersections(detail::Operand(subject), detail::Operand(clip),
+                                       detail::AllPairsSearch{}, detail::NaiveArithmetic{}, stats);
+    case Variant::Sweep:
+    case Variant::Exact:
+      break;
+  }
+  throw std::invalid_argument("variant '" + std::string(name(variant)) +
+                              "' is not implemented in this build");
+}
+
+}  // namespace
+
+bool isImplemented(Variant variant) { return variant == Variant::Naive; }
+
+Region clip(const Region& subject, const Region& clip, Op op, const Options& options,
+            Stats* stats) {
+  Stats local;
+  const OnBadRing onBadRing = options.sanitize ? OnBadRing::Drop : OnBadRing::Throw;
+  const Region s = normalized(subject, onBadRing);
+  const Region c = normalized(clip, onBadRing);
+  local.subjectVertices = vertexCount(s);
+  local.clipVertices = vertexCount(c);
+
+  auto t = Clock::now();
+  const detail::Phase1Result phase1 = runPhase1(s, c, options.variant, local);
+  local.phase1Seconds = secondsSince(t);
+
+  t = Clock::now();
+  detail::VertexGraph graph = detail::buildVertexGraph(phase1);
+  detail::markEntryExit(graph);
+  local.phase2Seconds = secondsSince(t);
+
+  t = Clock::now();
+  Region result = detail::cleanedUp(detail::traceResult(graph, op));
+  local.phase3Seconds = secondsSince(t);
+
+  local.outputRings = result.size();
+  local.outputVertices = vertexCount(result);
+  if (stats) *stats = local;
+  return result;
+}
+
+}  // namespace gh

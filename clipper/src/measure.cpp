@@ -1,0 +1,114 @@
+#include "ghclip/measure.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "orientation.h"
+
+namespace gh {
+namespace {
+
+struct Segment {
+  Point a, b;  // a.x < b.x
+  double yAt(double x) const {
+    if (x <= a.x) return a.y;
+    if (x >= b.x) return b.y;
+    return a.y + (b.y - a.y) * ((x - a.x) / (b.x - a.x));
+  }
+};
+
+// x of the proper crossing of two segments, if they cross at an interior point.
+bool properCrossingX(const Segment& s, const Segment& t, double& x) {
+  using detail::orientation;
+  using detail::Sign;
+  const Sign o1 = orientation(s.a, s.b, t.a), o2 = orientation(s.a, s.b, t.b);
+  const Sign o3 = orientation(t.a, t.b, s.a), o4 = orientation(t.a, t.b, s.b);
+  if (o1 == Sign::Zero || o2 == Sign::Zero || o3 == Sign::Zero || o4 == Sign::Zero) return false;
+  if (o1 == o2 || o3 == o4) return false;
+  const double d1 = (s.b.x - s.a.x) * (t.a.y - s.a.y) - (s.b.y - s.a.y) * (t.a.x - s.a.x);
+  const double d2 = (s.b.x - s.a.x) * (t.b.y - s.a.y) - (s.b.y - s.a.y) * (t.b.x - s.a.x);
+  const double alpha = d1 / (d1 - d2);  // along t
+  x = t.a.x + alpha * (t.b.x - t.a.x);
+  return true;
+}
+
+}  // namespace
+
+double signedArea(const Ring& ring) {
+  double twice = 0;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Point& p = ring[i];
+    const Point& q = ring[(i + 1) % n];
+    twice += (p.x - q.x) * (p.y + q.y);
+  }
+  return twice / 2;
+}
+
+std::size_t vertexCount(const Region& region) {
+  std::size_t n = 0;
+  for (const Ring& r : region) n += r.size();
+  return n;
+}
+
+bool insideEvenOdd(const Region& region, Point p) {
+  bool inside = false;
+  for (const Ring& ring : region) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      const Point& a = ring[i];
+      const Point& b = ring[(i + 1) % n];
+      if ((a.y > p.y) != (b.y > p.y)) {
+        const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+        if (p.x < x) inside = !inside;
+      }
+    }
+  }
+  return inside;
+}
+
+double evenOddArea(const Region& region) {
+  std::vector<Segment> segs;
+  std::vector<double> xs;
+  for (const Ring& ring : region) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      Point a = ring[i], b = ring[(i + 1) % n];
+      xs.push_back(a.x);
+      if (a.x == b.x) continue;  // vertical edges bound no slab
+      if (b.x < a.x) std::swap(a, b);
+      segs.push_back({a, b});
+    }
+  }
+  std::sort(segs.begin(), segs.end(), [](const Segment& s, const Segment& t) { return s.a.x < t.a.x; });
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    for (std::size_t j = i + 1; j < segs.size() && segs[j].a.x <= segs[i].b.x; ++j) {
+      double x;
+      if (properCrossingX(segs[i], segs[j], x)) xs.push_back(x);
+    }
+  }
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+
+  double area = 0;
+  std::vector<const Segment*> active;
+  std::vector<std::pair<double, const Segment*>> spanning;
+  std::size_t nextSeg = 0;
+  for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
+    const double x0 = xs[k], x1 = xs[k + 1], xm = (x0 + x1) / 2;
+    while (nextSeg < segs.size() && segs[nextSeg].a.x <= x0) active.push_back(&segs[nextSeg++]);
+    active.erase(std::remove_if(active.begin(), active.end(),
+                                [x0](const Segment* s) { return s->b.x <= x0; }),
+                 active.end());
+    spanning.clear();
+    for (const Segment* s : active) spanning.emplace_back(s->yAt(xm), s);
+    std::sort(spanning.begin(), spanning.end(),
+              [](const auto& u, const auto& v) { return u.first < v.first; });
+    for (std::size_t i = 0; i + 1 < spanning.size(); i += 2) {
+      const Segment& lo = *spanning[i].second;
+      const Segment& hi = *spanning[i + 1].second;
+      const double h0 = hi.yAt(x0) - lo.yAt(x0), h1 = hi.yAt(x1) - lo.yAt(x1);
+      area += (h0 + h1) / 2 * (x1 - x0);
+    }
+  }
+  return area;
+}
+
+}  // namespace gh

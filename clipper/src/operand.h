@@ -1,0 +1,25 @@
+// One operand (subject or clip) flattened for phase 1: all vertices of all rings in one array.
+// Edge e runs from vertices[e] to vertices[next[e]], so edges and vertices share indices.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ghclip/region.h"
+
+namespace gh::detail {
+
+struct Operand {
+  std::vector<Point> vertices;
+  std::vector<std::uint32_t> next;       // next vertex in the same ring
+  std::vector<std::uint32_t> ringStart;  // first vertex of each ring, plus one past the end
+
+  explicit Operand(const Region& region);
+
+  std::size_t ringCount() const { return ringStart.size() - 1; }
+  std::size_t size() const { return vertices.size(); }
+  Point from(std::uint32_t edge) const { return vertices[edge]; }
+  Point to(std::uint32_t edge) const { return vertices[next[edge]]; }
+};
+
+}  // namespace gh::detail

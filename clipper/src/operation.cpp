@@ -1,0 +1,39 @@
+#include "ghclip/operation.h"
+
+namespace gh {
+
+std::string_view name(Op op) {
+  switch (op) {
+    case Op::Intersection: return "intersection";
+    case Op::Union: return "union";
+    case Op::Difference: return "difference";
+    case Op::ReverseDifference: return "reverse-difference";
+    case Op::Xor: return "xor";
+  }
+  return "?";
+}
+
+std::string_view name(Variant variant) {
+  switch (variant) {
+    case Variant::Naive: return "naive";
+    case Variant::Sweep: return "sweep";
+    case Variant::Exact: return "exact";
+  }
+  return "?";
+}
+
+std::optional<Op> parseOp(std::string_view text) {
+  for (Op op : kAllOps) {
+    if (name(op) == text) return op;
+  }
+  return std::nullopt;
+}
+
+std::optional<Variant> parseVariant(std::string_view text) {
+  for (Variant v : {Variant::Naive, Variant::Sweep, Variant::Exact}) {
+    if (name(v) == text) return v;
+  }
+  return std::nullopt;
+}
+
+}  // namespace gh

@@ -1,0 +1,18 @@
+// Phase 3 of Greiner-Hormann (Figure 10): trace the result by walking from intersection vertex
+// to intersection vertex, switching operands at each one, the entry flag choosing the direction.
+// Union and the differences flip the flags of one or both operands (Figure 5); xor is the two
+// differences traced one after the other. Rings that cross nothing are kept or dropped by the
+// point-in-region test of their first vertex.
+#pragma once
+
+#include "ghclip/operation.h"
+#include "ghclip/region.h"
+#include "vertex_graph.h"
+
+namespace gh::detail {
+
+// Throws ClipFailure if a trace does not close within a bound of twice the node count, or
+// reaches an intersection vertex a previous trace used (inconsistent entry/exit marks).
+Region traceResult(VertexGraph& graph, Op op);
+
+}  // namespace gh::detail

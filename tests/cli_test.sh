@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# ghclip from the outside: results, exit codes, one-line errors, and no output file on bad input.
+#   cli_test.sh BIN_DIR EXAMPLES_DIR
+set -uo pipefail
+BIN="$1"
+EX="$2"
+TMP="$(mktemp -d)"
+trap 'rm -rf "$TMP"' EXIT
+fails=0
+passes=0
+check() {  # check NAME CONDITION...
+  local name="$1"
+  shift
+  if "$@"; then passes=$((passes + 1)); else echo "FAIL: $name"; fails=$((fails + 1)); fi
+}
+
+# Bad input: exit 2, exactly one line on stderr naming the file, no output file.
+bad() {  # bad NAME SUBJECT_TEXT
+  local name="$1" text="$2"
+  printf '%s' "$text" >"$TMP/$name.wkt"
+  "$BIN/ghclip" --op intersection "$TMP/$name.wkt" "$EX/half_square.wkt" -o "$TMP/$name.out" \
+    --svg "$TMP/$name.svg" 2>"$TMP/$name.err" >/dev/null
+  local code=$?
+  check "$name: exit 2 (got $code)" test "$code" -eq 2
+  check "$name: one stderr line" test "$(wc -l <"$TMP/$name.err")" -eq 1
+  check "$name: message names the file" grep -q "$name.wkt" "$TMP/$name.err"
+  check "$name: no output file" test ! -e "$TMP/$name.out"
+  check "$name: no svg file" test ! -e "$TMP/$name.svg"
+  check "$name: no temporary file" test -z "$(ls "$TMP" | grep tmp)"
+}
+bad malformed 'POLYGON((0 0, 1 0, 1 1'
+bad nan 'POLYGON((0 0, 1 0, nan 1, 0 0))'
+bad twovertex 'POLYGON((0 0, 1 1, 0 0))'
+bad notapolygon 'LINESTRING(0 0, 1 1)'
+bad huge 'POLYGON((0 0, 1e300 0, 0 1, 0 0))'
+bad badjson '{"type": "Polygon", "coordinates": [[[0, 0], [1]]]}'
+
+"$BIN/ghclip" --op intersection "$TMP/missing.wkt" "$EX/half_square.wkt" 2>"$TMP/missing.err"
+check "missing file: exit 2" test $? -eq 2
+check "missing file: named" grep -q missing.wkt "$TMP/missing.err"
+"$BIN/ghclip" --op frobnicate "$EX/pentagram.wkt" "$EX/half_square.wkt" 2>"$TMP/op.err"
+check "unknown op: exit 2" test $? -eq 2
+check "unknown op: one line" test "$(wc -l <"$TMP/op.err")" -eq 1
+"$BIN/ghclip" "$EX/pentagram.wkt" 2>/dev/null
+check "missing arguments: exit 2" test $? -eq 2
+
+# Good input: WKT and GeoJSON out, stdin in, statistics as JSON.
+"$BIN/ghclip" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" -o "$TMP/r.wkt" \
+  --svg "$TMP/r.svg" --stats >"$TMP/stats.json"
+check "pentagram: exit 0" test $? -eq 0
+check "pentagram: result is WKT" grep -q '^MULTIPOLYGON' "$TMP/r.wkt"
+check "pentagram: svg uses even-odd" grep -q 'fill-rule="evenodd"' "$TMP/r.svg"
+check "pentagram: stats count 4 intersections" grep -q '"intersections":4' "$TMP/stats.json"
+"$BIN/ghclip" --op union --format geojson - "$EX/gate.geojson" <"$EX/square.geojson" >"$TMP/u.json"
+check "stdin + geojson: exit 0" test $? -eq 0
+check "geojson output" grep -q '"type":"MultiPolygon"' "$TMP/u.json"
+"$BIN/ghclip" --op xor "$TMP/r.wkt" "$TMP/r.wkt" >/dev/null
+check "result reads back" test $? -eq 0
+
+echo "$passes passed, $fails failed"
+test "$fails" -eq 0

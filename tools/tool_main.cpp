@@ -1,0 +1,49 @@
+#include "tool_main.h"
+
+#include <iostream>
+
+#include "ghclip/errors.h"
+#include "ghio/formats.h"
+
+namespace gh::tools {
+namespace {
+
+std::string oneLine(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+}  // namespace
+
+int usageError(const std::string& tool, const std::string& message) {
+  std::cerr << tool << ": " << oneLine(message) << std::endl;
+  return kExitBadInput;
+}
+
+Region readRegion(const std::string& path) {
+  try {
+    return io::readAuto(io::readText(path));
+  } catch (const std::exception& e) {
+    throw BadInput(path + ": " + e.what());
+  }
+}
+
+int guardedMain(const char* tool, int argc, char** argv, int (*run)(int, char**)) {
+  try {
+    return run(argc, argv);
+  } catch (const BadInput& e) {
+    return usageError(tool, e.what());
+  } catch (const InvalidInput& e) {
+    return usageError(tool, e.what());
+  } catch (const ClipFailure& e) {
+    std::cerr << tool << ": clipping failed: " << oneLine(e.what()) << std::endl;
+    return kExitFailed;
+  } catch (const std::exception& e) {
+    std::cerr << tool << ": " << oneLine(e.what()) << std::endl;
+    return kExitFailed;
+  }
+}
+
+}  // namespace gh::tools

@@ -1,0 +1,30 @@
+// What every ghclip tool shares: one-line errors with fixed exit codes, and reading regions.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "ghclip/region.h"
+
+namespace gh::tools {
+
+inline constexpr int kExitFailed = 1;    // the algorithm or check failed on valid input
+inline constexpr int kExitBadInput = 2;  // bad input or usage
+
+// Bad input found by a tool; its message already names the file.
+class BadInput : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Prints "tool: message" (one line) on stderr and returns kExitBadInput.
+int usageError(const std::string& tool, const std::string& message);
+
+// Reads a region from a file ("-" = stdin), WKT or GeoJSON; BadInput names the file.
+Region readRegion(const std::string& path);
+
+// Runs `run`, turning every exception into one line on stderr and an exit code:
+// BadInput / gh::InvalidInput -> 2, gh::ClipFailure -> 1, anything else -> 1.
+int guardedMain(const char* tool, int argc, char** argv, int (*run)(int, char**));
+
+}  // namespace gh::tools
