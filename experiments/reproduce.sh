@@ -14,4 +14,4 @@ step() { printf '[reproduce] %s\n' "$*" >&2; }
 
 step "examples -> results/examples/"
 rm -rf "$RESULTS/examples"
-"$BIN/run_examples" "$HERE/examples" "$RESULTS/examples"
+(cd "$HERE/.." && "$BIN/run_examples" experiments/examples "${RESULTS#$PWD/}/examples")

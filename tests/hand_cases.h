@@ -88,14 +88,14 @@ inline std::vector<HandCase> handCases() {
        {5, 16, 7, 4, 11},
        -1},
       // Bow-tie (0,0)-(2,2)-(2,0)-(0,2): two triangles of area 1 meeting at (1,1). The clip
-      // [0,1.5]x[-1,3] (area 6) holds the left triangle (1) and of the right one the part with
-      // x in [1,1.5], whose height is 2x - 2: integral = 0.25.
+      // [-0.5,1.5]x[-1,3] (area 8) holds the left triangle (1) and of the right one the part
+      // with x in [1,1.5], whose height is 2x - 2: integral = 0.25.
       {"bowtie",
        {{{0, 0}, {2, 2}, {2, 0}, {0, 2}}},
-       {rect(0, -1, 1.5, 3)},
+       {rect(-0.5, -1, 1.5, 3)},
        2,
-       6,
-       {1.25, 6.75, 0.75, 4.75, 5.5},
+       8,
+       {1.25, 8.75, 0.75, 6.75, 7.5},
        -1},
       // Pentagram against the half-plane square [0,2]x[-2,2] (area 8): by the star's mirror
       // symmetry in the y axis, exactly half of its even-odd area is inside.

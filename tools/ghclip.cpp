@@ -9,7 +9,10 @@
 #include "ghclip/measure.h"
 #include "ghio/formats.h"
 #include "ghio/svg.h"
+#include "ghoracle/exact_oracle.h"
+#include "ghoracle/sampling_oracle.h"
 #include "stats_json.h"
+#include "verdict_json.h"
 #include "tool_main.h"
 
 namespace {
@@ -26,6 +29,7 @@ int run(int argc, char** argv) {
   CLI::App app{kDescription, "ghclip"};
   std::string opName, variantName = "naive", subjectPath, clipPath, outPath = "-",
                       formatName = "wkt", svgPath;
+  std::string checkName;
   bool wantStats = false, sanitize = false;
   app.add_option("--op", opName,
                  "intersection | union | difference | reverse-difference | xor")
@@ -38,6 +42,8 @@ int run(int argc, char** argv) {
   app.add_option("--svg", svgPath, "also draw subject, clip and result to this SVG file");
   app.add_flag("--stats", wantStats,
                "print statistics as JSON (stdout when -o names a file, else stderr)");
+  app.add_option("--check", checkName,
+                 "judge the result with an oracle: exact | sample (exit 1 if it fails)");
   app.add_flag("--sanitize", sanitize, "drop rings with fewer than 3 distinct vertices");
   try {
     app.parse(argc, argv);
@@ -55,6 +61,9 @@ int run(int argc, char** argv) {
   }
   if (formatName != "wkt" && formatName != "geojson") {
     return gh::tools::usageError("ghclip", "unknown --format '" + formatName + "'");
+  }
+  if (!checkName.empty() && checkName != "exact" && checkName != "sample") {
+    return gh::tools::usageError("ghclip", "unknown --check '" + checkName + "'");
   }
   if (subjectPath == "-" && clipPath == "-") {
     return gh::tools::usageError("ghclip", "only one of SUBJECT and CLIP can be stdin");
@@ -83,13 +92,27 @@ int run(int argc, char** argv) {
                                                    {&result, "#2ca02c", "#145214", "result", 0.6}},
                                                   title));
   }
+  nlohmann::json check;
+  bool checkPassed = true;
+  if (checkName == "exact") {
+    const auto v = gh::oracle::exactCheck(subject, clip, *op, result, {false, false, false});
+    checkPassed = v.pass;
+    check = gh::tools::verdictJson(v);
+  } else if (checkName == "sample") {
+    const auto v = gh::oracle::sampleCheck(subject, clip, *op, result);
+    checkPassed = v.pass();
+    check = gh::tools::verdictJson(v);
+  }
   if (wantStats) {
     nlohmann::json j = gh::tools::statsJson(stats);
     j["op"] = gh::name(*op);
     j["variant"] = gh::name(*variant);
+    if (!check.is_null()) j["check"] = check;
     (outPath == "-" ? std::cerr : std::cout) << j.dump() << std::endl;
+  } else if (!check.is_null()) {
+    std::cerr << "ghclip: check " << check.dump() << std::endl;
   }
-  return 0;
+  return checkPassed ? 0 : gh::tools::kExitFailed;
 }
 
 }  // namespace

@@ -1,0 +1,54 @@
+#include "ghoracle/tolerance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_set>
+
+namespace gh::oracle {
+namespace {
+
+struct PointHash {
+  std::size_t operator()(const Point& p) const {
+    return std::hash<double>()(p.x) * 31 + std::hash<double>()(p.y);
+  }
+};
+
+double ulpOf(double m) {
+  if (m == 0) return std::numeric_limits<double>::denorm_min();
+  return std::nextafter(m, std::numeric_limits<double>::infinity()) - m;
+}
+
+}  // namespace
+
+double roundingTolerance(const Region& subject, const Region& clip, const Region& result) {
+  std::unordered_set<Point, PointHash> inputVertices;
+  double m = 0;
+  for (const Region* r : {&subject, &clip}) {
+    for (const Ring& ring : *r) {
+      for (const Point& p : ring) {
+        inputVertices.insert(p);
+        m = std::max({m, std::abs(p.x), std::abs(p.y)});
+      }
+    }
+  }
+  for (const Ring& ring : result) {
+    for (const Point& p : ring) m = std::max({m, std::abs(p.x), std::abs(p.y)});
+  }
+  const double displacement = kConstructionUlps * ulpOf(m) * std::sqrt(2.0);
+  double tolerance = 0;
+  for (const Ring& ring : result) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point& v = ring[i];
+      if (inputVertices.count(v)) continue;
+      const Point& a = ring[(i + n - 1) % n];
+      const Point& b = ring[(i + 1) % n];
+      // hypot avoids overflow at 1e150 scales.
+      tolerance += displacement * (std::hypot(v.x - a.x, v.y - a.y) + std::hypot(b.x - v.x, b.y - v.y)) / 2;
+    }
+  }
+  return tolerance;
+}
+
+}  // namespace gh::oracle

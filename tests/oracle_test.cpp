@@ -1,0 +1,156 @@
+// The oracles pass correct answers and fail damaged ones, with the exact error area of the damage.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "ghclip/clip.h"
+#include "ghclip/measure.h"
+#include "ghoracle/exact_oracle.h"
+#include "ghoracle/invariants.h"
+#include "ghoracle/sampling_oracle.h"
+#include "ghwork/generators.h"
+#include "hand_cases.h"
+
+namespace gh {
+namespace {
+
+using test::HandCase;
+using test::rect;
+
+TEST(Oracles, PassEveryHandCaseAnswer) {
+  for (const HandCase& c : test::handCases()) {
+    for (int k = 0; k < 5; ++k) {
+      const Op op = kAllOps[k];
+      const Region r = clip(c.subject, c.clip, op);
+      const auto exact = oracle::exactCheck(c.subject, c.clip, op, r);
+      EXPECT_TRUE(exact.pass) << c.name << " " << name(op) << " error " << exact.errorArea;
+      EXPECT_NEAR(exact.expectedArea, c.expected[k], 1e-12 * std::max(1.0, c.expected[k]))
+          << c.name << " " << name(op);
+      EXPECT_TRUE(oracle::sampleCheck(c.subject, c.clip, op, r).pass()) << c.name << " " << name(op);
+      EXPECT_TRUE(oracle::invariantViolations(c.subject, c.clip, op, r).empty()) << c.name;
+    }
+  }
+}
+
+// A finding, pinned: on degenerate input the naive variant moves vertices (the paper's
+// perturbation), so the exact oracle fails its answer, by an error area of the size of the move
+// (2^-42 of the largest coordinate times the edge lengths), not by anything gross.
+TEST(Oracles, NaivePerturbationIsSeenAsASmallNonRoundingError) {
+  const Region s{rect(0, 0, 2, 2)};
+  const Region shared{rect(2, 0, 4, 2)};  // shares the edge x = 2
+  for (const Region* c : {&s, &shared}) {
+    Stats stats;
+    const Region r = clip(s, *c, Op::Union, {}, &stats);
+    EXPECT_GT(stats.perturbations, 0u);
+    const auto v = oracle::exactCheck(s, *c, Op::Union, r);
+    EXPECT_FALSE(v.pass);
+    EXPECT_GT(v.errorArea, v.tolerance);
+    EXPECT_LT(v.relativeError(), 1e-11);
+  }
+}
+
+// Damaged answers: (subject, clip, op, damaged result, exact area of the damage).
+struct Damage {
+  std::string what;
+  Region subject, clip;
+  Op op;
+  Region result;
+  double damageArea;
+};
+
+std::vector<Damage> damages() {
+  std::vector<Damage> out;
+  // The gate's intersection with the square is two 1 x 2 rings; drop the last one.
+  const HandCase gate = test::handCases()[2];
+  Region two = clip(gate.subject, gate.clip, Op::Intersection);
+  two.pop_back();
+  out.push_back({"ring dropped", gate.subject, gate.clip, Op::Intersection, two, 2});
+  // Square [0,4]^2 with hole [1,3]^2 inside a larger clip: the answer is the subject itself;
+  // losing the hole adds its area 4.
+  const Region holed{rect(0, 0, 4, 4), rect(1, 1, 3, 3)};
+  out.push_back({"hole lost", holed, {rect(-1, -1, 5, 5)}, Op::Intersection, {rect(0, 0, 4, 4)}, 4});
+  // [0,2]^2 n [1,3]^2 = [1,2]^2; move its corner (2,2) right by 1e-6 of the extent 3: the region
+  // gains the triangle (2,1), (2+d,2), (2,2) of area d/2.
+  const double d = 3e-6;
+  out.push_back({"vertex moved", {rect(0, 0, 2, 2)}, {rect(1, 1, 3, 3)}, Op::Intersection,
+                 {{{1, 1}, {2, 1}, {2 + d, 2}, {1, 2}}}, d / 2});
+  // Union given for intersection: 7 instead of 1.
+  out.push_back({"operation confused", {rect(0, 0, 2, 2)}, {rect(1, 1, 3, 3)}, Op::Intersection,
+                 clip({rect(0, 0, 2, 2)}, {rect(1, 1, 3, 3)}, Op::Union), 6});
+  return out;
+}
+
+TEST(Oracles, FailDamagedAnswersWithTheExactDamageArea) {
+  for (const Damage& dmg : damages()) {
+    const auto exact = oracle::exactCheck(dmg.subject, dmg.clip, dmg.op, dmg.result);
+    EXPECT_FALSE(exact.pass) << dmg.what;
+    EXPECT_NEAR(exact.errorArea, dmg.damageArea, 1e-9 * dmg.damageArea) << dmg.what;
+    ASSERT_TRUE(exact.witness.has_value()) << dmg.what;
+    // The witness lies where the answer is wrong.
+    const Point w = *exact.witness;
+    EXPECT_NE(insideEvenOdd(dmg.result, w),
+              apply(dmg.op, insideEvenOdd(dmg.subject, w), insideEvenOdd(dmg.clip, w)))
+        << dmg.what;
+    EXPECT_FALSE(oracle::sampleCheck(dmg.subject, dmg.clip, dmg.op, dmg.result).pass()) << dmg.what;
+  }
+}
+
+TEST(Oracles, ExactAnswerHasTheExpectedArea) {
+  for (const HandCase& c : test::handCases()) {
+    for (int k = 0; k < 5; ++k) {
+      EXPECT_NEAR(evenOddArea(oracle::exactAnswer(c.subject, c.clip, kAllOps[k])), c.expected[k],
+                  1e-9 * std::max(1.0, c.expected[k]))
+          << c.name << " " << name(kAllOps[k]);
+    }
+  }
+}
+
+TEST(Oracles, OverlappingSegmentsCountWithMultiplicity) {
+  // R = S drawn twice is the empty set under even-odd; S alone is the answer to S n S.
+  const Region s{rect(0, 0, 1, 1)};
+  const Region twice{rect(0, 0, 1, 1), rect(0, 0, 1, 1)};
+  EXPECT_TRUE(oracle::exactCheck(s, s, Op::Intersection, s).pass);
+  const auto v = oracle::exactCheck(s, s, Op::Intersection, twice);
+  EXPECT_FALSE(v.pass);
+  EXPECT_DOUBLE_EQ(v.errorArea, 1);
+}
+
+TEST(Oracles, InvariantsCatchImpossibleAreas) {
+  const Region a{rect(0, 0, 2, 2)}, b{rect(1, 1, 3, 3)};
+  EXPECT_FALSE(oracle::invariantViolations(a, b, Op::Intersection, {rect(0, 0, 3, 3)}).empty());
+  EXPECT_FALSE(oracle::invariantViolations(a, b, Op::Union, {rect(0, 0, 1, 1)}).empty());
+  EXPECT_FALSE(
+      oracle::invariantViolations(a, b, Op::Intersection, {{{1, 1}, {1, 1}, {2, 2}, {1, 2}}}).empty());
+}
+
+// 1000 seeded cases of the paper's workload (n = 5..50, all five operations): the two oracles
+// must reach the same verdict. Half the answers are damaged (largest ring dropped) so that both
+// verdicts are exercised.
+TEST(Oracles, AgreeOnTheRandomWorkload) {
+  int agree = 0, passes = 0, fails = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const std::size_t n = 5 + static_cast<std::size_t>(i) % 46;
+    const Region s{work::randomRing(n, 2 * i + 1)}, c{work::randomRing(n, 2 * i + 2)};
+    const Op op = kAllOps[i % 5];
+    Region r = clip(s, c, op);
+    if (i % 2 == 1 && !r.empty()) {
+      auto largest = std::max_element(r.begin(), r.end(), [](const Ring& a, const Ring& b) {
+        return std::abs(signedArea(a)) < std::abs(signedArea(b));
+      });
+      r.erase(largest);
+    }
+    const bool exact = oracle::exactCheck(s, c, op, r, {false, false, false}).pass;
+    oracle::SampleOptions so;
+    so.seed = static_cast<std::uint64_t>(i);
+    const bool sample = oracle::sampleCheck(s, c, op, r, so).pass();
+    EXPECT_EQ(exact, sample) << "case " << i << " n=" << n << " " << name(op);
+    agree += exact == sample;
+    (exact ? passes : fails)++;
+  }
+  RecordProperty("agreements", agree);
+  EXPECT_GT(passes, 300);
+  EXPECT_GT(fails, 300);
+}
+
+}  // namespace
+}  // namespace gh

@@ -1,0 +1,98 @@
+// ghcheck: judge a candidate result of op(SUBJECT, CLIP) with an oracle, or write the exact answer.
+// Exit codes: 0 pass, 1 fail, 2 bad input or usage.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "ghio/formats.h"
+#include "ghio/svg.h"
+#include "ghoracle/exact_oracle.h"
+#include "ghoracle/sampling_oracle.h"
+#include "tool_main.h"
+#include "verdict_json.h"
+
+namespace {
+
+constexpr const char* kDescription =
+    "Judge RESULT as the answer to op(SUBJECT, CLIP), or with --expected write the exact answer.\n"
+    "Regions are read like ghclip reads them (WKT or GeoJSON, all rings pooled, even-odd rule).\n"
+    "exact: CGAL arrangement with rational arithmetic; exact error area and a witness point.\n"
+    "sample: seeded points, even-odd crossing tests, points within delta of an edge skipped.\n"
+    "Exit codes: 0 pass, 1 fail, 2 bad input or usage.";
+
+int run(int argc, char** argv) {
+  CLI::App app{kDescription, "ghcheck"};
+  std::string opName, oracleName = "exact", subjectPath, clipPath, resultPath, svgPath,
+                      outPath = "-", formatName = "wkt";
+  bool json = false, expectedOnly = false;
+  std::uint64_t seed = 1;
+  app.add_option("--op", opName, "intersection | union | difference | reverse-difference | xor")
+      ->required();
+  app.add_option("--oracle", oracleName, "exact | sample")->capture_default_str();
+  app.add_option("SUBJECT", subjectPath, "subject region")->required();
+  app.add_option("CLIP", clipPath, "clip region")->required();
+  app.add_option("RESULT", resultPath, "candidate result (not with --expected)");
+  app.add_flag("--json", json, "print the verdict as JSON");
+  app.add_option("--svg", svgPath, "draw S, C, R and the wrong faces (red)");
+  app.add_option("--seed", seed, "sampling oracle seed")->capture_default_str();
+  app.add_flag("--expected", expectedOnly, "write the exact answer's rings instead of judging");
+  app.add_option("-o,--output", outPath, "with --expected: output file")->capture_default_str();
+  app.add_option("--format", formatName, "with --expected: wkt | geojson")->capture_default_str();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return gh::tools::usageError("ghcheck", e.what());
+  }
+  const auto op = gh::parseOp(opName);
+  if (!op) return gh::tools::usageError("ghcheck", "unknown --op '" + opName + "'");
+  if (oracleName != "exact" && oracleName != "sample") {
+    return gh::tools::usageError("ghcheck", "unknown --oracle '" + oracleName + "'");
+  }
+  if (expectedOnly == !resultPath.empty()) {
+    return gh::tools::usageError("ghcheck", "give either RESULT or --expected");
+  }
+  const gh::Region subject = gh::tools::readRegion(subjectPath);
+  const gh::Region clip = gh::tools::readRegion(clipPath);
+
+  if (expectedOnly) {
+    const gh::Region answer = gh::oracle::exactAnswer(subject, clip, *op);
+    gh::io::writeText(outPath, gh::io::write(answer, formatName == "geojson" ? gh::io::Format::GeoJson
+                                                                           : gh::io::Format::Wkt));
+    return 0;
+  }
+
+  const gh::Region result = gh::tools::readRegion(resultPath);
+  bool pass;
+  std::vector<gh::io::SvgMarker> markers;
+  gh::Region wrong;
+  if (oracleName == "exact") {
+    const auto v = gh::oracle::exactCheck(subject, clip, *op, result);
+    pass = v.pass;
+    std::cout << (json ? gh::tools::verdictJson(v).dump() + "\n" : gh::tools::verdictText(v));
+    wrong = v.wrong;
+    if (v.witness) markers.push_back({*v.witness, "#d00000", "witness"});
+  } else {
+    gh::oracle::SampleOptions options;
+    options.seed = seed;
+    const auto v = gh::oracle::sampleCheck(subject, clip, *op, result, options);
+    pass = v.pass();
+    std::cout << (json ? gh::tools::verdictJson(v).dump() + "\n" : gh::tools::verdictText(v));
+    if (v.firstMismatch) markers.push_back({*v.firstMismatch, "#d00000", "first mismatch"});
+  }
+  if (!svgPath.empty()) {
+    gh::io::writeText(svgPath,
+                      gh::io::svgPicture({{&subject, "#c6dbef", "#2171b5", "subject"},
+                                          {&clip, "#fcbba1", "#cb181d", "clip"},
+                                          {&result, "#a1d99b", "#145214", "result"},
+                                          {&wrong, "#ff0000", "#ff0000", "wrong faces", 0.9}},
+                                         std::string("ghcheck ") + gh::name(*op).data() + ": " +
+                                             (pass ? "pass" : "FAIL"),
+                                         markers));
+  }
+  return pass ? 0 : gh::tools::kExitFailed;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return gh::tools::guardedMain("ghcheck", argc, argv, run); }
