@@ -57,5 +57,25 @@ check "geojson output" grep -q '"type":"MultiPolygon"' "$TMP/u.json"
 "$BIN/ghclip" --op xor "$TMP/r.wkt" "$TMP/r.wkt" >/dev/null
 check "result reads back" test $? -eq 0
 
+# ghcheck: pass (0), fail (1), bad input (2); --expected writes the exact answer.
+"$BIN/ghcheck" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/r.wkt" >"$TMP/v.txt"
+check "ghcheck passes ghclip's answer" test $? -eq 0
+check "ghcheck prints the verdict" grep -q '^verdict: pass' "$TMP/v.txt"
+"$BIN/ghcheck" --op union "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/r.wkt" --json \
+  --svg "$TMP/wrong.svg" >"$TMP/v.json"
+check "ghcheck fails a confused operation" test $? -eq 1
+check "ghcheck json has a witness" grep -q '"witness":\[' "$TMP/v.json"
+check "ghcheck svg marks wrong faces" grep -q 'wrong faces' "$TMP/wrong.svg"
+"$BIN/ghcheck" --op union --oracle sample "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/r.wkt" >/dev/null
+check "sampling oracle fails it too" test $? -eq 1
+"$BIN/ghcheck" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/nan.wkt" 2>/dev/null
+check "ghcheck bad input: exit 2" test $? -eq 2
+"$BIN/ghcheck" --op intersection --expected "$EX/pentagram.wkt" "$EX/half_square.wkt" -o "$TMP/e.wkt"
+check "ghcheck --expected writes the answer" grep -q '^MULTIPOLYGON' "$TMP/e.wkt"
+"$BIN/ghcheck" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/e.wkt" >/dev/null
+check "the exact answer passes" test $? -eq 0
+"$BIN/ghclip" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" --check exact >/dev/null 2>"$TMP/chk.err"
+check "ghclip --check exact passes" test $? -eq 0
+
 echo "$passes passed, $fails failed"
 test "$fails" -eq 0

@@ -32,6 +32,21 @@ TEST(Oracles, PassEveryHandCaseAnswer) {
   }
 }
 
+// The acceptance case: a correct answer with several rings passes; without its last
+// ring it fails with an error area equal to that ring's area.
+TEST(Oracles, PentagramAnswerWithoutItsLastRing) {
+  const Region star{test::pentagram()};
+  const Region square{rect(-2, -0.7, 2, -0.45)};  // cuts the two lower points apart
+  Region r = clip(star, square, Op::Intersection);
+  ASSERT_GE(r.size(), 2u);
+  EXPECT_TRUE(oracle::exactCheck(star, square, Op::Intersection, r).pass);
+  const double lastRing = evenOddArea({r.back()});
+  r.pop_back();
+  const auto v = oracle::exactCheck(star, square, Op::Intersection, r);
+  EXPECT_FALSE(v.pass);
+  EXPECT_NEAR(v.errorArea, lastRing, 1e-9 * lastRing);
+}
+
 // A finding, pinned: on degenerate input the naive variant moves vertices (the paper's
 // perturbation), so the exact oracle fails its answer, by an error area of the size of the move
 // (2^-42 of the largest coordinate times the edge lengths), not by anything gross.

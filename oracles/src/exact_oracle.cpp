@@ -209,7 +209,7 @@ std::string rationalText(const EFT& v) {
 }  // namespace
 
 double ExactVerdict::relativeError() const {
-  const double scale = std::max(std::abs(expectedArea), std::abs(resultArea));
+  const double scale = std::max({subjectArea, clipArea, expectedArea, resultArea});
   return scale > 0 ? errorArea / scale : (errorArea > 0 ? 1.0 : 0.0);
 }
 
@@ -222,7 +222,7 @@ ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const 
   ExactVerdict v;
   // Expected and result areas: interval sums (exact evaluation of every intersection vertex
   // costs 5-10x more). The error area, which decides the verdict, is summed exactly.
-  Interval expected = 0, got = 0, error = 0;
+  Interval expected = 0, got = 0, error = 0, areaS = 0, areaC = 0;
   double worst = -1;
   Face worstFace;
   std::vector<Face> wrongFaces;
@@ -230,8 +230,10 @@ ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const 
     if (f->is_unbounded()) continue;  // outside everything: op(0, 0) = 0 for every op
     const int bits = f->data();
     const bool want = expectedInside(op, bits), have = resultInside(bits);
-    if (!want && !have) continue;
+    if (!want && !have && !(bits & (kS | kC))) continue;
     const auto approxArea = faceAreaInterval(f);
+    if (bits & kS) areaS += approxArea;
+    if (bits & kC) areaC += approxArea;
     if (want) expected += approxArea;
     if (have) got += approxArea;
     if (want != have) {
@@ -243,6 +245,8 @@ ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const 
   const bool anyWrong = !wrongFaces.empty();
   v.expectedArea = CGAL::to_double(expected);
   v.resultArea = CGAL::to_double(got);
+  v.subjectArea = CGAL::to_double(areaS);
+  v.clipArea = CGAL::to_double(areaC);
   v.areaUncertainty = std::max(expected.sup() - expected.inf(), got.sup() - got.inf());
   v.errorArea = CGAL::to_double(error);
   v.tolerance = roundingTolerance(subject, clip, result);

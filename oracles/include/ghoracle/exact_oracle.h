@@ -20,6 +20,8 @@ struct ExactVerdict {
   bool pass = false;          // error area <= tolerance, certified (interval or exact)
   double expectedArea = 0;    // area of op(S, C), midpoint of a certified interval
   double resultArea = 0;      // even-odd area of R, likewise
+  double subjectArea = 0;     // even-odd areas of the operands, likewise
+  double clipArea = 0;
   double areaUncertainty = 0;  // width of those intervals (the true values lie within)
   double errorArea = 0;       // area of the symmetric difference (rounded exact value, or the
                               // midpoint of a certified interval without exactErrorArea)
@@ -31,7 +33,8 @@ struct ExactVerdict {
   std::size_t faces = 0, vertices = 0, edges = 0;
   double seconds = 0;
 
-  // errorArea relative to the larger of the expected and result areas (0 when both are 0).
+  // errorArea relative to the largest of the operands', expected and result areas
+  // (0 when all are 0): a scale that stays meaningful when the expected answer is empty.
   double relativeError() const;
 };
 
