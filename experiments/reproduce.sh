@@ -22,3 +22,44 @@ rm -rf results/examples
 step "naive variant judged by the exact oracle -> results/oracle-first-look.md"
 rm -rf results/oracle-first-look results/oracle-first-look.md
 "$BIN/oracle_first_look" results 1000
+
+step "one picture per workload -> results/workloads/"
+rm -rf results/workloads
+mkdir -p results/workloads
+{
+  echo "# Workloads"
+  echo
+  echo "One example of every workload, written by \`ghgen NAME --n N --seed 1\` (commit $GHCLIP_COMMIT)."
+  echo "Subject in blue, clip in red; both filled with the even-odd rule."
+  echo
+} >results/workloads/README.md
+while read -r name n; do
+  "$BIN/ghgen" "$name" --n "$n" --seed 1 -o "results/workloads/$name.wkt" --svg "results/workloads/$name.svg"
+  printf '## %s (n = %s)\n\n![%s](%s.svg)\n\n' "$name" "$n" "$name" "$name" >>results/workloads/README.md
+done <<'LIST'
+random 20
+simple 30
+grid 10
+identical 10
+shared-edge 4
+touching-vertex 4
+nested-touching 4
+sliver 4
+sub-boundary 8
+bitset-grid 50
+circles 400
+coastline 4000
+holes 60
+simple+ulp 30
+grid+tiny 10
+grid+huge 10
+simple+far 30
+LIST
+
+step "property suite with a fixed seed; shrunk counterexamples -> results/counterexamples/"
+rm -rf results/counterexamples
+# Known violations are expected failures (tests/properties/expected_failures.txt); anything
+# else failing here fails the reproduction.
+GHCLIP_COUNTEREXAMPLES=results/counterexamples RC_PARAMS="max_success=100 seed=20261122 verbose_progress=0" \
+  "$BIN/property_tests" >results/properties.log 2>&1 || { tail -40 results/properties.log; exit 1; }
+grep -E '^\[ +(OK|FAILED) +\]|expected failure' results/properties.log | sed 's/ (.*//' >results/properties-summary.txt

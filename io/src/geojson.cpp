@@ -5,6 +5,8 @@
 #include "ghclip/errors.h"
 #include "ghio/formats.h"
 
+#include <vector>
+
 namespace gh::io {
 namespace {
 
@@ -79,7 +81,8 @@ Region readGeoJson(std::string_view text) {
   return out;
 }
 
-std::string writeGeoJson(const Region& region) {
+namespace {
+json multiPolygon(const Region& region) {
   json polys = json::array();
   for (const Ring& ring : region) {
     json coords = json::array();
@@ -87,7 +90,51 @@ std::string writeGeoJson(const Region& region) {
     if (!ring.empty()) coords.push_back({ring.front().x, ring.front().y});
     polys.push_back(json::array({coords}));
   }
-  return json{{"type", "MultiPolygon"}, {"coordinates", polys}}.dump();
+  return json{{"type", "MultiPolygon"}, {"coordinates", polys}};
+}
+}  // namespace
+
+std::string writeGeoJson(const Region& region) { return multiPolygon(region).dump(); }
+
+std::string writeGeoJsonPair(const Region& subject, const Region& clip) {
+  json features = json::array();
+  for (const auto& [name, region] : {std::pair{"subject", &subject}, std::pair{"clip", &clip}}) {
+    features.push_back(
+        {{"type", "Feature"}, {"properties", {{"name", name}}}, {"geometry", multiPolygon(*region)}});
+  }
+  return json{{"type", "FeatureCollection"}, {"features", features}}.dump();
+}
+
+RegionPair readPair(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string_view::npos && text[first] == '{') {
+    json doc;
+    try {
+      doc = json::parse(text.begin(), text.end());
+    } catch (const json::exception& e) {
+      throw InvalidInput(std::string("GeoJSON: ") + e.what());
+    }
+    if (!doc.is_object() || !doc.contains("features") || !doc["features"].is_array() ||
+        doc["features"].size() != 2) {
+      throw InvalidInput("GeoJSON pair: expected a FeatureCollection of two features");
+    }
+    RegionPair p;
+    readGeometry(doc["features"][0], p.subject, 0);
+    readGeometry(doc["features"][1], p.clip, 0);
+    return p;
+  }
+  // Two WKT geometries, one per line.
+  std::string_view rest = text;
+  std::vector<std::string> lines;
+  while (!rest.empty()) {
+    const auto nl = rest.find('\n');
+    const std::string line(rest.substr(0, nl));
+    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+    if (nl == std::string_view::npos) break;
+    rest.remove_prefix(nl + 1);
+  }
+  if (lines.size() != 2) throw InvalidInput("WKT pair: expected two non-empty lines");
+  return {readWkt(lines[0]), readWkt(lines[1])};
 }
 
 }  // namespace gh::io

@@ -24,6 +24,13 @@ Region readAuto(std::string_view text);
 std::string writeWkt(const Region& region);
 std::string writeGeoJson(const Region& region);
 std::string write(const Region& region, Format format);
+// A FeatureCollection of two features, {"name": "subject"} and {"name": "clip"}.
+std::string writeGeoJsonPair(const Region& subject, const Region& clip);
+// Reads a pair written by ghgen: two WKT lines, or a two-feature FeatureCollection.
+struct RegionPair {
+  Region subject, clip;
+};
+RegionPair readPair(std::string_view text);
 
 // Reads a whole file ("-" is standard input) as text; InvalidInput if it cannot be read.
 std::string readText(const std::string& path);

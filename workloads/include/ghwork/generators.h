@@ -1,18 +1,55 @@
-// Workload generators, deterministic by seed, shared by tests, fuzzers and experiments.
+// Workload generators, deterministic by seed, in one place for tests, fuzzers and experiments.
+//
+//   random       the paper's (Section 6): n vertices uniform in the unit square, joined in order
+//   simple       simple polygons: star-shaped by angle (even seeds) or random points untangled by
+//                2-opt (odd seeds)
+//   grid         n vertices on the integer grid 0..8 joined in order: shared vertices,
+//                vertex-on-edge, collinear overlaps and identical rings are frequent
+//   identical, shared-edge, touching-vertex, nested-touching, sliver, sub-boundary
+//                the named degenerate families (integer coordinates)
+//   bitset-grid  unions of unit cells of a random bitset on a k x k grid (one ring per cell; the
+//                even-odd rule cancels the shared edges): the exact answer of every operation is
+//                the bitwise AND / OR / AND-NOT / XOR of the bitsets
+//   circles      two perturbed circles of n vertices crossing twice (realistic)
+//   coastline    two star-shaped fractal outlines of n vertices (realistic)
+//   holes        a shell with several hole rings, against another one
+// A suffix picks a near-degenerate variant of any workload:
+//   +ulp   every coordinate moved by one ulp up or down
+//   +tiny  scaled by 2^-997 (about 1e-300)      +huge  scaled by a power of two to about 1e150
+//   +far   translated by (1e9, 1e9)
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "ghclip/region.h"
 
 namespace gh::work {
 
-// The paper's workload (Section 6): n vertices uniform in the unit square, joined in order.
-// Two such n-gons cross about 0.23 n^2 times.
-Ring randomRing(std::size_t n, std::uint64_t seed);
+struct Workload {
+  Region subject;
+  Region clip;
+};
 
-// Vertices on the integer grid 0..gridSize, joined in order: shared vertices, vertex-on-edge and
-// collinear overlaps are frequent.
+// All base workload names, and all variant suffixes.
+const std::vector<std::string>& workloadNames();
+const std::vector<std::string>& variantSuffixes();
+
+// Generates "NAME" or "NAME+SUFFIX" with about n vertices per operand (at least what the shape
+// needs). Throws std::invalid_argument for an unknown name.
+Workload generate(const std::string& name, std::size_t n, std::uint64_t seed);
+
+// The bitset behind a bitset-grid workload, for its exact answer.
+struct BitsetGrid {
+  int size = 0;                  // k: cells are [i, i+1] x [j, j+1], 0 <= i, j < k
+  std::vector<bool> subject, clip;  // cell (i, j) at index j * k + i
+};
+BitsetGrid bitsetGrid(std::size_t n, std::uint64_t seed);
+Region cellsRegion(const BitsetGrid& grid, const std::vector<bool>& cells);
+
+// The paper's random ring, and an integer-grid ring (building blocks, also used directly).
+Ring randomRing(std::size_t n, std::uint64_t seed);
 Ring gridRing(std::size_t n, int gridSize, std::uint64_t seed);
 
 }  // namespace gh::work
