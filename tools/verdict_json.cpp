@@ -10,7 +10,7 @@ nlohmann::json verdictJson(const oracle::ExactVerdict& v) {
                       {"expected_area", v.expectedArea},
                       {"result_area", v.resultArea},
                       {"error_area", v.errorArea},
-                      {"error_area_exact", v.errorAreaExact},
+                      {"error_area_exact", v.errorAreaExact.empty() ? nlohmann::json() : nlohmann::json(v.errorAreaExact)},
                       {"relative_error", v.relativeError()},
                       {"tolerance", v.tolerance},
                       {"faces", v.faces},

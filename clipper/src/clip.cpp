@@ -12,6 +12,7 @@
 #include "naive_arithmetic.h"
 #include "phase1_intersections.h"
 #include "phase3_tracing.h"
+#include "sweep_search.h"
 #include "vertex_graph.h"
 
 namespace gh {
@@ -30,6 +31,8 @@ detail::Phase1Result runPhase1(const Region& subject, const Region& clip, Varian
       return detail::findIntersections(detail::Operand(subject), detail::Operand(clip),
                                        detail::AllPairsSearch{}, detail::NaiveArithmetic{}, stats);
     case Variant::Sweep:
+      return detail::findIntersections(detail::Operand(subject), detail::Operand(clip),
+                                       detail::SweepSearch{}, detail::NaiveArithmetic{}, stats);
     case Variant::Exact:
       break;
   }
@@ -39,7 +42,7 @@ detail::Phase1Result runPhase1(const Region& subject, const Region& clip, Varian
 
 }  // namespace
 
-bool isImplemented(Variant variant) { return variant == Variant::Naive; }
+bool isImplemented(Variant variant) { return variant != Variant::Exact; }
 
 Region clip(const Region& subject, const Region& clip, Op op, const Options& options,
             Stats* stats) {

@@ -1,6 +1,5 @@
 #include "ghclip/validate.h"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -30,12 +29,19 @@ void checkCoordinates(const Ring& ring, std::size_t r) {
   }
 }
 
-std::size_t distinctCount(const Ring& ring) {
-  std::vector<std::pair<double, double>> pts;
-  pts.reserve(ring.size());
-  for (const Point& p : ring) pts.emplace_back(p.x, p.y);
-  std::sort(pts.begin(), pts.end());
-  return static_cast<std::size_t>(std::unique(pts.begin(), pts.end()) - pts.begin());
+// At least 3 distinct vertices? One pass: the first vertex, one different from it, and one
+// different from both (no sort: this runs on every input of every clip).
+bool hasThreeDistinct(const Ring& ring) {
+  if (ring.size() < 3) return false;
+  const Point a = ring[0];
+  std::size_t i = 1;
+  while (i < ring.size() && ring[i] == a) ++i;
+  if (i == ring.size()) return false;
+  const Point b = ring[i];
+  for (; i < ring.size(); ++i) {
+    if (ring[i] != a && ring[i] != b) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -52,7 +58,7 @@ Region normalized(const Region& region, OnBadRing onBadRing) {
       if (ring.empty() || ring.back() != p) ring.push_back(p);
     }
     while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
-    if (ring.size() < 3 || distinctCount(ring) < 3) {
+    if (!hasThreeDistinct(ring)) {
       if (onBadRing == OnBadRing::Drop) continue;
       throw InvalidInput("ring " + std::to_string(r + 1) + " has fewer than 3 distinct vertices");
     }
