@@ -63,3 +63,7 @@ rm -rf results/counterexamples
 GHCLIP_COUNTEREXAMPLES=results/counterexamples RC_PARAMS="max_success=100 seed=20261122 verbose_progress=0" \
   "$BIN/property_tests" >results/properties.log 2>&1 || { tail -40 results/properties.log; exit 1; }
 grep -E '^\[ +(OK|FAILED) +\]|expected failure' results/properties.log | sed 's/ (.*//' >results/properties-summary.txt
+
+step "every method on simple, holes, grid and random inputs, judged exactly -> results/peers-first-look.md"
+rm -rf results/peers-first-look results/peers-first-look.md
+"$BIN/peers_first_look" results 200

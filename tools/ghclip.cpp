@@ -1,6 +1,7 @@
 // ghclip: clip two regions read from files (WKT or GeoJSON) and write the result.
 // Exit codes: 0 done, 1 the algorithm failed on valid input, 2 bad input or usage.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -10,6 +11,7 @@
 #include "ghio/formats.h"
 #include "ghio/svg.h"
 #include "ghoracle/exact_oracle.h"
+#include "ghoracle/peer.h"
 #include "ghoracle/sampling_oracle.h"
 #include "stats_json.h"
 #include "verdict_json.h"
@@ -29,12 +31,15 @@ int run(int argc, char** argv) {
   CLI::App app{kDescription, "ghclip"};
   std::string opName, variantName = "naive", subjectPath, clipPath, outPath = "-",
                       formatName = "wkt", svgPath;
-  std::string checkName;
+  std::string checkName, peerName;
   bool wantStats = false, sanitize = false;
   app.add_option("--op", opName,
                  "intersection | union | difference | reverse-difference | xor")
       ->required();
-  app.add_option("--variant", variantName, "naive (the paper)")->capture_default_str();
+  app.add_option("--variant", variantName, "naive (the paper) | sweep")->capture_default_str();
+  app.add_option("--peer", peerName,
+                 "clip with a peer library instead: clipper6 | geos | boost | cgal (geos, boost "
+                 "and cgal take only simple polygons with holes and refuse the rest, exit 2)");
   app.add_option("SUBJECT", subjectPath, "subject region file, '-' for stdin")->required();
   app.add_option("CLIP", clipPath, "clip region file, '-' for stdin")->required();
   app.add_option("-o,--output", outPath, "result file ('-' = stdout)")->capture_default_str();
@@ -74,10 +79,23 @@ int run(int argc, char** argv) {
   gh::Options options;
   options.variant = *variant;
   options.sanitize = sanitize;
+  const gh::peers::Peer* peer = nullptr;
+  if (!peerName.empty()) {
+    peer = gh::peers::findPeer(peerName);
+    if (!peer) return gh::tools::usageError("ghclip", "unknown --peer '" + peerName + "'");
+  }
   gh::Stats stats;
   gh::Region result;
   try {
-    result = gh::clip(subject, clip, *op, options, &stats);
+    if (peer) {
+      const auto start = std::chrono::steady_clock::now();
+      result = peer->clip(subject, clip, *op);
+      stats.phase1Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      stats.outputRings = result.size();
+      stats.outputVertices = gh::vertexCount(result);
+    } else {
+      result = gh::clip(subject, clip, *op, options, &stats);
+    }
   } catch (const gh::InvalidInput& e) {
     throw gh::tools::BadInput(subjectPath + " / " + clipPath + ": " + e.what());
   }
@@ -85,7 +103,7 @@ int run(int argc, char** argv) {
   const auto format = formatName == "geojson" ? gh::io::Format::GeoJson : gh::io::Format::Wkt;
   gh::io::writeText(outPath, gh::io::write(result, format));
   if (!svgPath.empty()) {
-    const std::string title = std::string(gh::name(*op)) + " (" + variantName +
+    const std::string title = std::string(gh::name(*op)) + " (" + (peer ? peerName : variantName) +
                               "), even-odd area " + std::to_string(gh::evenOddArea(result));
     gh::io::writeText(svgPath, gh::io::svgPicture({{&subject, "#c6dbef", "#2171b5", "subject"},
                                                    {&clip, "#fcbba1", "#cb181d", "clip"},
@@ -106,7 +124,12 @@ int run(int argc, char** argv) {
   if (wantStats) {
     nlohmann::json j = gh::tools::statsJson(stats);
     j["op"] = gh::name(*op);
-    j["variant"] = gh::name(*variant);
+    if (peer) {
+      j = {{"peer", peer->name()}, {"seconds", stats.phase1Seconds}, {"output_rings", stats.outputRings},
+           {"output_vertices", stats.outputVertices}};
+    } else {
+      j["variant"] = gh::name(*variant);
+    }
     if (!check.is_null()) j["check"] = check;
     (outPath == "-" ? std::cerr : std::cout) << j.dump() << std::endl;
   } else if (!check.is_null()) {

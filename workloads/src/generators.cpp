@@ -21,11 +21,13 @@ Ring rect(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
-// Star-shaped around c: sorted random angles, random radii in [rMin, rMax].
+// Star-shaped around c, hence simple: angle k is 2 pi (k + 0.8 u) / n with u uniform in [0, 1),
+// so consecutive angles are less than pi apart for n >= 4 (and every triangle is simple);
+// random radii in [rMin, rMax].
 Ring starRing(std::size_t n, Point c, double rMin, double rMax, Rng& rng) {
   std::vector<double> angles(std::max<std::size_t>(n, 3));
-  for (double& a : angles) a = uniform(rng, 0, 2 * kPi);
-  std::sort(angles.begin(), angles.end());
+  const double step = 2 * kPi / static_cast<double>(angles.size());
+  for (std::size_t k = 0; k < angles.size(); ++k) angles[k] = step * (static_cast<double>(k) + 0.8 * uniform(rng, 0, 1));
   Ring ring;
   for (double a : angles) {
     const double r = uniform(rng, rMin, rMax);
@@ -131,7 +133,7 @@ Workload degenerateFamily(const std::string& name, std::size_t n, Rng& rng) {
   if (name == "shared-edge") {
     // Two rectangles side by side; the shared edge partly overlaps.
     const double x = g(2, 5), y0 = g(0, 2), y1 = g(4, 7);
-    return {{rect(g(0, 1), y0, x, y1)}, {rect(x, g(0, 3), g(6, 8), g(3, 8))}};
+    return {{rect(g(0, 1), y0, x, y1)}, {rect(x, g(0, 3), g(6, 8), g(4, 8))}};
   }
   if (name == "touching-vertex") {
     const double x = g(2, 6), y = g(2, 6);

@@ -1,0 +1,137 @@
+#include "ghclip/polygons_with_holes.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "ghclip/measure.h"
+#include "ghclip/validate.h"
+#include "operand.h"
+#include "orientation.h"
+#include "sweep_search.h"
+
+namespace gh {
+namespace {
+
+using detail::orientation;
+using detail::Sign;
+
+// Do closed segments ab and cd share any point? Exact.
+bool segmentsMeet(Point a, Point b, Point c, Point d) {
+  const Sign o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+  const Sign o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+  auto within = [](Point p, Point q, Point r) {  // r on line pq: inside the box of pq?
+    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
+           r.y <= std::max(p.y, q.y);
+  };
+  if (o1 != o2 && o3 != o4 && o1 != Sign::Zero && o2 != Sign::Zero && o3 != Sign::Zero && o4 != Sign::Zero) {
+    return true;
+  }
+  return (o1 == Sign::Zero && within(a, b, c)) || (o2 == Sign::Zero && within(a, b, d)) ||
+         (o3 == Sign::Zero && within(c, d, a)) || (o4 == Sign::Zero && within(c, d, b));
+}
+
+// Exact even-odd test of p against one ring; p must not lie on the ring.
+bool insideRing(const Ring& ring, Point p) {
+  bool inside = false;
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+    const Point a = ring[i], b = ring[(i + 1) % n];
+    if ((a.y > p.y) != (b.y > p.y)) {
+      const Sign o = orientation(a, b, p);
+      if ((b.y > a.y) ? o == Sign::Positive : o == Sign::Negative) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+std::string at(Point p) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "(" << p.x << " " << p.y << ")";
+  return s.str();
+}
+
+}  // namespace
+
+PolygonsWithHoles toPolygonsWithHoles(const Region& input) {
+  PolygonsWithHoles out;
+  const Region region = normalized(input, OnBadRing::Throw);
+  const detail::Operand op(region);
+  std::vector<std::uint32_t> ringOf(op.size());
+  for (std::size_t r = 0; r < op.ringCount(); ++r) {
+    for (std::uint32_t v = op.ringStart[r]; v < op.ringStart[r + 1]; ++v) ringOf[v] = static_cast<std::uint32_t>(r);
+  }
+  // Every pair of edges with overlapping boxes: neighbours in a ring may only share their common
+  // vertex (and must not fold back onto each other); all other pairs must not meet at all.
+  std::optional<std::string> refusal;
+  detail::SweepSearch{}.forEachCandidate(op, op, [&](std::uint32_t e, std::uint32_t f) {
+    if (refusal || e >= f) return;
+    const Point a = op.from(e), b = op.to(e), c = op.from(f), d = op.to(f);
+    const bool eThenF = op.next[e] == f, fThenE = op.next[f] == e;
+    if (eThenF || fThenE) {
+      if (eThenF && fThenE) return;  // a 2-edge ring cannot pass normalisation
+      // Consecutive edges p->q->r: only q is shared; collinear with r back over q is a spike.
+      const Point p = eThenF ? a : c, q = eThenF ? b : d, r = eThenF ? d : b;
+      if (orientation(p, q, r) == Sign::Zero && (r.x - q.x) * (q.x - p.x) + (r.y - q.y) * (q.y - p.y) <= 0) {
+        refusal = "ring " + std::to_string(ringOf[e] + 1) + " folds back on itself at " + at(q);
+      }
+      return;
+    }
+    if (segmentsMeet(a, b, c, d)) {
+      refusal = ringOf[e] == ringOf[f]
+                    ? "ring " + std::to_string(ringOf[e] + 1) + " touches or crosses itself near " + at(a)
+                    : "rings " + std::to_string(ringOf[e] + 1) + " and " + std::to_string(ringOf[f] + 1) +
+                          " touch or cross near " + at(a);
+    }
+  });
+  if (refusal) {
+    out.refusal = "not simple polygons with holes: " + *refusal;
+    return out;
+  }
+  for (std::size_t r = 0; r < region.size(); ++r) {
+    if (signedArea(region[r]) == 0) {
+      out.refusal = "not simple polygons with holes: ring " + std::to_string(r + 1) + " has zero area";
+      return out;
+    }
+  }
+  // Nesting: rings are disjoint, so any vertex tells whether a ring lies inside another.
+  const std::size_t n = region.size();
+  std::vector<std::vector<std::size_t>> containers(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) {
+      if (i != j && insideRing(region[j], region[i][0])) containers[i].push_back(j);
+    }
+  }
+  std::vector<int> polygonOf(n, -1);
+  auto oriented = [](Ring ring, bool ccw) {
+    if ((signedArea(ring) > 0) != ccw) std::reverse(ring.begin(), ring.end());
+    return ring;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (containers[i].size() % 2 == 0) {
+      polygonOf[i] = static_cast<int>(out.polygons.size());
+      out.polygons.push_back({oriented(region[i], true), {}});
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (containers[i].size() % 2 == 1) {
+      // The direct container is the one that is itself inside all the others.
+      std::size_t parent = containers[i][0];
+      for (std::size_t j : containers[i]) {
+        if (containers[j].size() > containers[parent].size()) parent = j;
+      }
+      out.polygons[static_cast<std::size_t>(polygonOf[parent])].holes.push_back(oriented(region[i], false));
+    }
+  }
+  return out;
+}
+
+Region toRegion(const std::vector<PolygonWithHoles>& polygons) {
+  Region out;
+  for (const PolygonWithHoles& p : polygons) {
+    out.push_back(p.shell);
+    for (const Ring& h : p.holes) out.push_back(h);
+  }
+  return out;
+}
+
+}  // namespace gh

@@ -1,0 +1,20 @@
+// Run a method on one case and judge the answer with the exact oracle.
+#pragma once
+
+#include <string>
+
+#include "ghoracle/exact_oracle.h"
+#include "methods.h"
+
+namespace gh::experiments {
+
+struct Judged {
+  Outcome outcome = Outcome::Failed;
+  double relativeError = 0;
+  std::string message;  // refusal or failure reason
+  Region result;
+};
+
+Judged judge(const Method& m, const Region& subject, const Region& clip, Op op);
+
+}  // namespace gh::experiments
