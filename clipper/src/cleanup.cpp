@@ -1,26 +1,174 @@
 #include "cleanup.h"
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "operand.h"
 #include "orientation.h"
+#include "sweep_search.h"
 
 namespace gh::detail {
 namespace {
 
-void dropRepeatedPoints(Ring& ring) {
-  Ring kept;
-  kept.reserve(ring.size());
-  for (const Point& p : ring) {
-    if (kept.empty() || kept.back() != p) kept.push_back(p);
+struct PointLess {
+  bool operator()(const Point& a, const Point& b) const { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+};
+struct PointHash {
+  std::size_t operator()(const Point& p) const {
+    return std::hash<double>()(p.x) * 1000003u ^ std::hash<double>()(p.y);
   }
-  while (kept.size() > 1 && kept.back() == kept.front()) kept.pop_back();
-  ring.swap(kept);
+};
+
+int signOfDifference(double a, double b) { return (a > b) - (a < b); }
+
+// b is the tip of a zero-width spike a -> b -> c: the three are collinear and the path turns
+// back at b (decided exactly: orientation, then the direction along the dominant axis).
+bool isSpike(Point a, Point b, Point c) {
+  if (orientation(a, b, c) != Sign::Zero) return false;
+  const int in = signOfDifference(b.x, a.x) != 0 ? signOfDifference(b.x, a.x) : signOfDifference(b.y, a.y);
+  const int out = signOfDifference(b.x, a.x) != 0 ? signOfDifference(c.x, b.x) : signOfDifference(c.y, b.y);
+  return in * out < 0 || c == a;
+}
+
+// Drops repeated points and spike tips, including ones that only appear once others are gone
+// (A B C B A: C, then B). Spikes and repeated points bound nothing, so the interior is unchanged.
+void simplify(Ring& ring) {
+  Ring out;
+  out.reserve(ring.size());
+  auto push = [&out](Point p) {
+    if (!out.empty() && out.back() == p) return;
+    while (out.size() >= 2 && isSpike(out[out.size() - 2], out.back(), p)) {
+      out.pop_back();
+      if (out.back() == p) return;
+    }
+    out.push_back(p);
+  };
+  for (const Point& p : ring) push(p);
+  // Close the ring: the seam between the last and the first points may hide repeats and spikes.
+  for (bool changed = true; changed && out.size() >= 3;) {
+    changed = false;
+    if (out.back() == out.front()) {
+      out.pop_back(), changed = true;
+    } else if (isSpike(out[out.size() - 2], out.back(), out.front())) {
+      out.pop_back(), changed = true;
+    } else if (isSpike(out.back(), out[0], out[1])) {
+      out.erase(out.begin()), changed = true;
+    }
+  }
+  ring.swap(out);
 }
 
 bool allCollinear(const Ring& ring) {
-  // ring[0] != ring[1] after dropRepeatedPoints, so they span a line.
+  // ring[0] != ring[1] after simplify, so they span a line.
   for (std::size_t i = 2; i < ring.size(); ++i) {
     if (orientation(ring[0], ring[1], ring[i]) != Sign::Zero) return false;
   }
   return true;
+}
+
+bool anyVertexRepeats(const Region& region) {
+  std::unordered_map<Point, int, PointHash> seen;
+  for (const Ring& ring : region) {
+    for (const Point& p : ring) {
+      if (++seen[p] > 1) return true;
+    }
+  }
+  return false;
+}
+
+// Zero-width seams: two rings of the answer running along the same segment in opposite
+// directions (the exact variant's limit leaves them between regions that only touch, like two
+// squares sharing an edge). Each pair bounds nothing: split collinear overlaps at each other's
+// endpoints, cancel opposite pairs, and chain what is left into rings again, so that the union of
+// two squares sharing an edge is one rectangle.
+Region dissolveSeams(const Region& region) {
+  const Operand op(region);
+  std::vector<std::vector<Point>> cuts(op.size());
+  SweepSearch{}.forEachCandidate(op, op, [&](std::uint32_t e, std::uint32_t f) {
+    if (e >= f) return;
+    const Point a = op.from(e), b = op.to(e), c = op.from(f), d = op.to(f);
+    if (orientation(a, b, c) != Sign::Zero || orientation(a, b, d) != Sign::Zero) return;
+    auto strictlyInside = [](Point p, Point q, Point r) {  // r strictly between p and q (collinear)
+      return PointLess()(std::min(p, q, PointLess()), r) && PointLess()(r, std::max(p, q, PointLess()));
+    };
+    for (Point x : {c, d}) {
+      if (strictlyInside(a, b, x)) cuts[e].push_back(x);
+    }
+    for (Point x : {a, b}) {
+      if (strictlyInside(c, d, x)) cuts[f].push_back(x);
+    }
+  });
+  // Directed pieces, then cancellation of opposite pairs.
+  std::map<std::pair<std::pair<double, double>, std::pair<double, double>>, int> count;
+  std::vector<std::pair<Point, Point>> pieces;
+  for (std::uint32_t e = 0; e < op.size(); ++e) {
+    std::vector<Point> pts = cuts[e];
+    const Point a = op.from(e), b = op.to(e);
+    std::sort(pts.begin(), pts.end(), PointLess());
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    if (PointLess()(b, a)) std::reverse(pts.begin(), pts.end());
+    Point from = a;
+    for (const Point& x : pts) pieces.push_back({from, x}), from = x;
+    pieces.push_back({from, b});
+  }
+  auto key = [](Point u, Point v) { return std::make_pair(std::make_pair(u.x, u.y), std::make_pair(v.x, v.y)); };
+  for (const auto& [u, v] : pieces) ++count[key(u, v)];
+  std::vector<std::pair<Point, Point>> kept;
+  for (const auto& [u, v] : pieces) {
+    int& forward = count[key(u, v)];
+    int& backward = count[key(v, u)];
+    if (forward > 0 && backward > 0 && !(u == v)) {
+      --forward, --backward;  // this piece and one opposite copy cancel
+      continue;
+    }
+    if (forward > 0) --forward, kept.push_back({u, v});
+  }
+  // Chain the remaining pieces; at a vertex with several ways on, take the sharpest right turn,
+  // which keeps regions that touch at a vertex in separate rings.
+  std::map<Point, std::vector<std::size_t>, PointLess> outgoing;
+  for (std::size_t i = 0; i < kept.size(); ++i) outgoing[kept[i].first].push_back(i);
+  std::vector<char> used(kept.size(), 0);
+  Region out;
+  for (std::size_t start = 0; start < kept.size(); ++start) {
+    if (used[start]) continue;
+    Ring ring;
+    std::size_t cur = start;
+    for (std::size_t guard = 0; guard <= kept.size(); ++guard) {
+      used[cur] = 1;
+      ring.push_back(kept[cur].first);
+      const Point at = kept[cur].second;
+      const double inAngle = std::atan2(at.y - kept[cur].first.y, at.x - kept[cur].first.x);
+      std::size_t best = kept.size();
+      double bestTurn = 10;
+      for (std::size_t j : outgoing[at]) {
+        if (used[j]) continue;
+        double turn = std::atan2(kept[j].second.y - at.y, kept[j].second.x - at.x) - inAngle;
+        while (turn <= -M_PI) turn += 2 * M_PI;
+        while (turn > M_PI) turn -= 2 * M_PI;
+        if (turn < bestTurn) bestTurn = turn, best = j;
+      }
+      if (best == kept.size()) break;  // back at the start (its piece is used)
+      cur = best;
+    }
+    out.push_back(std::move(ring));
+  }
+  return out;
+}
+
+// Drops vertices where the ring goes straight on (collinear, not folding back).
+void dropStraightVertices(Ring& ring) {
+  for (bool changed = true; changed && ring.size() > 3;) {
+    changed = false;
+    for (std::size_t i = 0; i < ring.size() && ring.size() > 3; ++i) {
+      const Point a = ring[(i + ring.size() - 1) % ring.size()], b = ring[i], c = ring[(i + 1) % ring.size()];
+      if (orientation(a, b, c) == Sign::Zero && !isSpike(a, b, c)) {
+        ring.erase(ring.begin() + static_cast<long>(i));
+        changed = true;
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -29,10 +177,18 @@ Region cleanedUp(Region region) {
   Region out;
   out.reserve(region.size());
   for (Ring& ring : region) {
-    dropRepeatedPoints(ring);
+    simplify(ring);
     if (ring.size() >= 3 && !allCollinear(ring)) out.push_back(std::move(ring));
   }
-  return out;
+  // Seams can only exist where a vertex repeats; rare, so this costs one hash pass otherwise.
+  if (!anyVertexRepeats(out)) return out;
+  Region dissolved;
+  for (Ring& ring : dissolveSeams(out)) {
+    simplify(ring);
+    dropStraightVertices(ring);
+    if (ring.size() >= 3 && !allCollinear(ring)) dissolved.push_back(std::move(ring));
+  }
+  return dissolved;
 }
 
 }  // namespace gh::detail

@@ -9,6 +9,7 @@
 #include "ghclip/errors.h"
 #include "ghclip/measure.h"
 #include "ghclip/validate.h"
+#include "exact_arithmetic.h"
 #include "naive_arithmetic.h"
 #include "phase1_intersections.h"
 #include "phase3_tracing.h"
@@ -34,15 +35,15 @@ detail::Phase1Result runPhase1(const Region& subject, const Region& clip, Varian
       return detail::findIntersections(detail::Operand(subject), detail::Operand(clip),
                                        detail::SweepSearch{}, detail::NaiveArithmetic{}, stats);
     case Variant::Exact:
-      break;
+      return detail::findIntersections(detail::Operand(subject), detail::Operand(clip),
+                                       detail::SweepSearch{}, detail::ExactArithmetic{}, stats);
   }
-  throw std::invalid_argument("variant '" + std::string(name(variant)) +
-                              "' is not implemented in this build");
+  throw std::invalid_argument("unknown variant");
 }
 
 }  // namespace
 
-bool isImplemented(Variant variant) { return variant != Variant::Exact; }
+bool isImplemented(Variant) { return true; }
 
 Region clip(const Region& subject, const Region& clip, Op op, const Options& options,
             Stats* stats) {

@@ -29,10 +29,10 @@ class NaiveArithmetic {
                 std::uint32_t clipEdge) const;
 
   // Order of two crossings on the same subject (clip) edge: by alpha, as in the paper.
-  bool lessAlongSubject(const Crossing& a, const Crossing& b) const {
+  bool lessAlongSubject(const Crossing& a, const Crossing& b, const Operand&, const Operand&) const {
     return a.alphaSubject < b.alphaSubject;
   }
-  bool lessAlongClip(const Crossing& a, const Crossing& b) const {
+  bool lessAlongClip(const Crossing& a, const Crossing& b, const Operand&, const Operand&) const {
     return a.alphaClip < b.alphaClip;
   }
 

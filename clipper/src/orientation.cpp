@@ -2,37 +2,33 @@
 
 #include <gmpxx.h>
 
-#include <cmath>
-#include <limits>
+#include "approx.h"
 
 namespace gh::detail {
+
+std::uint64_t& exactFallbacks() {
+  thread_local std::uint64_t count = 0;
+  return count;
+}
+
 namespace {
 
-Sign signOf(int s) { return s > 0 ? Sign::Positive : s < 0 ? Sign::Negative : Sign::Zero; }
+template <class N>
+N cross(Point a, Point b, Point c, Point d) {
+  return (N(b.x) - N(a.x)) * (N(d.y) - N(c.y)) - (N(b.y) - N(a.y)) * (N(d.x) - N(c.x));
+}
 
-Sign exactOrientation(Point a, Point b, Point c) {
-  // Doubles convert to rationals exactly, so this is the true sign.
-  const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), cx(c.x), cy(c.y);
-  const mpq_class det = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-  return signOf(sgn(det));
+Sign decide(Point a, Point b, Point c, Point d) {
+  const int s = certainSign(cross<Approx>(a, b, c, d));
+  if (s != 2) return toSign(s);
+  ++exactFallbacks();
+  return toSign(sgn(cross<mpq_class>(a, b, c, d)));  // doubles convert to rationals exactly
 }
 
 }  // namespace
 
-Sign orientation(Point a, Point b, Point c) {
-  // Shewchuk's orient2d stage A: |error| <= (3 + 16 eps) eps * (|left| + |right|), valid when no
-  // intermediate result under- or overflows; outside that range go straight to exact arithmetic.
-  constexpr double eps = std::numeric_limits<double>::epsilon() / 2;
-  constexpr double errBound = (3.0 + 16.0 * eps) * eps;
-  const double left = (b.x - a.x) * (c.y - a.y);
-  const double right = (b.y - a.y) * (c.x - a.x);
-  const double det = left - right;
-  const double sum = std::abs(left) + std::abs(right);
-  if (sum > 1e-280 && sum < 1e280 && std::isfinite(det)) {
-    if (det > errBound * sum) return Sign::Positive;
-    if (-det > errBound * sum) return Sign::Negative;
-  }
-  return exactOrientation(a, b, c);
-}
+Sign orientation(Point a, Point b, Point c) { return decide(a, b, a, c); }
+
+Sign crossSign(Point a, Point b, Point c, Point d) { return decide(a, b, c, d); }
 
 }  // namespace gh::detail

@@ -1,7 +1,8 @@
-// Exact orientation of three double points: the one predicate the shared code (output clean-up)
-// needs. A floating-point filter with Shewchuk's error bound, and an exact GMP fallback when the
-// filter cannot decide or the products may have under- or overflowed.
+// Exact signs of the polynomial predicates everything else is built from: a floating-point filter
+// (approx.h) with an exact GMP fallback, counted.
 #pragma once
+
+#include <cstdint>
 
 #include "ghclip/region.h"
 
@@ -9,7 +10,15 @@ namespace gh::detail {
 
 enum class Sign { Negative = -1, Zero = 0, Positive = 1 };
 
+inline Sign toSign(int s) { return s > 0 ? Sign::Positive : s < 0 ? Sign::Negative : Sign::Zero; }
+
 // Sign of (b - a) x (c - a): Positive when a, b, c turn counter-clockwise.
 Sign orientation(Point a, Point b, Point c);
+
+// Sign of (b - a) x (d - c), the cross product of two edge directions.
+Sign crossSign(Point a, Point b, Point c, Point d);
+
+// Exact fallbacks taken by this thread so far (the filter could not decide).
+std::uint64_t& exactFallbacks();
 
 }  // namespace gh::detail

@@ -18,6 +18,7 @@
 #include "ghclip/errors.h"
 #include "ghclip/stats.h"
 #include "operand.h"
+#include "orientation.h"
 #include "pair_test.h"
 
 namespace gh::detail {
@@ -41,6 +42,7 @@ template <class Search, class Arithmetic>
 Phase1Result findIntersections(Operand subject, Operand clip, const Search& search,
                                const Arithmetic& arithmetic, Stats& stats) {
   Phase1Result r{std::move(subject), std::move(clip), {}, {}, {}, {}, {}};
+  const std::uint64_t fallbacksBefore = exactFallbacks();
   for (int round = 0;; ++round) {
     r.crossings.clear();
     std::vector<std::uint32_t> degenerateSubject, degenerateClip;
@@ -79,14 +81,14 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
   for (std::uint32_t i = 0; i < cs.size(); ++i) r.subjectOrder[i] = r.clipOrder[i] = i;
   std::sort(r.subjectOrder.begin(), r.subjectOrder.end(), [&](std::uint32_t a, std::uint32_t b) {
     if (cs[a].subjectEdge != cs[b].subjectEdge) return cs[a].subjectEdge < cs[b].subjectEdge;
-    if (arithmetic.lessAlongSubject(cs[a], cs[b])) return true;
-    if (arithmetic.lessAlongSubject(cs[b], cs[a])) return false;
+    if (arithmetic.lessAlongSubject(cs[a], cs[b], r.subject, r.clip)) return true;
+    if (arithmetic.lessAlongSubject(cs[b], cs[a], r.subject, r.clip)) return false;
     return cs[a].clipEdge < cs[b].clipEdge;
   });
   std::sort(r.clipOrder.begin(), r.clipOrder.end(), [&](std::uint32_t a, std::uint32_t b) {
     if (cs[a].clipEdge != cs[b].clipEdge) return cs[a].clipEdge < cs[b].clipEdge;
-    if (arithmetic.lessAlongClip(cs[a], cs[b])) return true;
-    if (arithmetic.lessAlongClip(cs[b], cs[a])) return false;
+    if (arithmetic.lessAlongClip(cs[a], cs[b], r.subject, r.clip)) return true;
+    if (arithmetic.lessAlongClip(cs[b], cs[a], r.subject, r.clip)) return false;
     return cs[a].subjectEdge < cs[b].subjectEdge;
   });
 
@@ -99,6 +101,7 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
   for (std::size_t k = 0; k < r.clip.ringCount(); ++k) {
     r.clipRingInside[k] = arithmetic.clipVertexInsideSubject(r.clip, r.clip.ringStart[k], r.subject);
   }
+  stats.filterFailures = exactFallbacks() - fallbacksBefore;
   return r;
 }
 
