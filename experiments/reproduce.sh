@@ -67,3 +67,6 @@ grep -E '^\[ +(OK|FAILED) +\]|expected failure' results/properties.log | sed 's/
 step "every method on simple, holes, grid and random inputs, judged exactly -> results/peers-first-look.md"
 rm -rf results/peers-first-look results/peers-first-look.md
 "$BIN/peers_first_look" results 200
+
+step "exact vs naive on 10^5 degenerate cases -> results/exact-degenerate.md (about 4 minutes)"
+"$BIN/exact_degenerate" results 100000

@@ -111,6 +111,13 @@ Region holesRegion(std::size_t n, Point offset, Rng& rng) {
   return region;
 }
 
+bool hasThreeDistinct(const Ring& ring) {
+  std::vector<std::pair<double, double>> d;
+  for (const Point& p : ring) d.emplace_back(p.x, p.y);
+  std::sort(d.begin(), d.end());
+  return std::unique(d.begin(), d.end()) - d.begin() >= 3;
+}
+
 // A star ring snapped to the integer grid, without the repeated vertices snapping creates.
 Ring gridStar(std::size_t n, Point c, double rMin, double rMax, Rng& rng) {
   Ring snapped;
@@ -119,7 +126,7 @@ Ring gridStar(std::size_t n, Point c, double rMin, double rMax, Rng& rng) {
     if (snapped.empty() || snapped.back() != p) snapped.push_back(p);
   }
   while (snapped.size() > 1 && snapped.back() == snapped.front()) snapped.pop_back();
-  if (snapped.size() < 3) snapped = {{c.x - 1, c.y - 1}, {c.x + 1, c.y - 1}, {c.x, c.y + 1}};
+  if (!hasThreeDistinct(snapped)) snapped = {{c.x - 1, c.y - 1}, {c.x + 1, c.y - 1}, {c.x, c.y + 1}};
   return snapped;
 }
 
@@ -136,8 +143,9 @@ Workload degenerateFamily(const std::string& name, std::size_t n, Rng& rng) {
     return {{rect(g(0, 1), y0, x, y1)}, {rect(x, g(0, 3), g(6, 8), g(4, 8))}};
   }
   if (name == "touching-vertex") {
-    const double x = g(2, 6), y = g(2, 6);
-    return {{rect(g(0, 1), g(0, 1), x, y)}, {{{x, y}, {g(7, 8), y + 1}, {x + 1, g(7, 8)}}}};
+    // A rectangle and a triangle whose only common point is the rectangle's corner (x, y).
+    const double x = g(2, 5), y = g(2, 5);
+    return {{rect(g(0, 1), g(0, 1), x, y)}, {{{x, y}, {x + g(2, 3), y + 1}, {x + 1, y + g(2, 3)}}}};
   }
   if (name == "nested-touching") {
     // C inside S, sharing part of S's bottom edge and touching its right edge at a vertex.
@@ -154,7 +162,7 @@ Workload degenerateFamily(const std::string& name, std::size_t n, Rng& rng) {
     const Ring s = gridStar(std::max<std::size_t>(2 * n, 6), {4, 4}, 2, 4, rng);
     Ring c;
     for (std::size_t i = 0; i < s.size(); i += 2) c.push_back(s[i]);
-    if (c.size() < 3) c = s;
+    if (!hasThreeDistinct(c)) c = s;
     return {{s}, {c}};
   }
   throw std::invalid_argument("unknown workload '" + name + "'");
