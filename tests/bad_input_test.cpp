@@ -84,20 +84,21 @@ TEST(Normalisation, EmptyRegionIsTheEmptySet) {
 }
 
 // Phase 3 must stop with ClipFailure, never loop, when the linked lists are not what phases 1-2
-// promise. Corrupt them by hand: every original clip vertex becomes a self-loop, so a walk into
-// the clip operand can never reach an intersection vertex again.
+// promise. Corrupt them by hand: the clip's list becomes a cycle that never leads back to the
+// intersection vertex a trace started from.
 TEST(Tracing, BrokenListsRaiseClipFailureInsteadOfLooping) {
   using namespace detail;
   Stats stats;
-  Phase1Result r = findIntersections(Operand({rect(0, 0, 2, 2)}), Operand({rect(1, 1, 3, 3)}),
-                                     AllPairsSearch{}, NaiveArithmetic{}, stats);
-  ASSERT_EQ(r.crossings.size(), 2u);
+  Phase1Result r = findIntersections(
+      Operand({rect(0, 0, 4, 4)}),
+      Operand({{{0.5, 2}, {1.5, 2}, {1.5, 5}, {2.5, 5}, {2.5, 2}, {3.5, 2}, {3.5, 6}, {0.5, 6}}}),
+      AllPairsSearch{}, NaiveArithmetic{}, stats);
+  ASSERT_EQ(r.crossings.size(), 4u);
   VertexGraph g = buildVertexGraph(r);
   markEntryExit(g);
   EXPECT_NO_THROW(traceResult(g, Op::Intersection));
-  for (std::uint32_t n = g.firstClipNode; n < g.nodes.size(); ++n) {
-    if (!g.nodes[n].isIntersection()) g.nodes[n].next = g.nodes[n].prev = n;
-  }
+  // Point every clip node's neighbour at one subject node: traces can no longer close.
+  for (std::uint32_t n = g.firstClipNode; n < g.nodes.size(); ++n) g.nodes[n].neighbor = 1;
   EXPECT_THROW(traceResult(g, Op::Intersection), ClipFailure);
 }
 
@@ -116,7 +117,6 @@ TEST(Tracing, ReusedIntersectionVertexRaisesClipFailure) {
   markEntryExit(g);
   int failures = 0;
   for (std::uint32_t n = 0; n < g.nodes.size(); ++n) {
-    if (!g.nodes[n].isIntersection()) continue;
     VertexGraph corrupt = g;
     corrupt.nodes[n].entry = !corrupt.nodes[n].entry;
     try {

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
-#include <unordered_map>
 
 #include "operand.h"
 #include "orientation.h"
@@ -17,7 +17,10 @@ struct PointLess {
 };
 struct PointHash {
   std::size_t operator()(const Point& p) const {
-    return std::hash<double>()(p.x) * 1000003u ^ std::hash<double>()(p.y);
+    std::uint64_t x, y;
+    std::memcpy(&x, &p.x, 8), std::memcpy(&y, &p.y, 8);
+    std::uint64_t h = (x ^ (y * 0x9E3779B97F4A7C15ull)) * 0xBF58476D1CE4E5B9ull;
+    return static_cast<std::size_t>(h ^ (h >> 31));
   }
 };
 
@@ -68,11 +71,25 @@ bool allCollinear(const Ring& ring) {
   return true;
 }
 
+// Does any point occur twice in the region? A flat open-addressing table: this runs over every
+// output vertex of the exact variant.
 bool anyVertexRepeats(const Region& region) {
-  std::unordered_map<Point, int, PointHash> seen;
+  std::size_t n = 0;
+  for (const Ring& ring : region) n += ring.size();
+  std::size_t capacity = 16;
+  while (capacity < 2 * n) capacity *= 2;
+  std::vector<Point> slots(capacity);
+  std::vector<char> used(capacity, 0);
+  const PointHash hash;
   for (const Ring& ring : region) {
     for (const Point& p : ring) {
-      if (++seen[p] > 1) return true;
+      for (std::size_t i = hash(p) & (capacity - 1);; i = (i + 1) & (capacity - 1)) {
+        if (!used[i]) {
+          used[i] = 1, slots[i] = p;
+          break;
+        }
+        if (slots[i] == p) return true;
+      }
     }
   }
   return false;
@@ -173,7 +190,7 @@ void dropStraightVertices(Ring& ring) {
 
 }  // namespace
 
-Region cleanedUp(Region region) {
+Region cleanedUp(Region region, bool dissolve) {
   Region out;
   out.reserve(region.size());
   for (Ring& ring : region) {
@@ -181,7 +198,7 @@ Region cleanedUp(Region region) {
     if (ring.size() >= 3 && !allCollinear(ring)) out.push_back(std::move(ring));
   }
   // Seams can only exist where a vertex repeats; rare, so this costs one hash pass otherwise.
-  if (!anyVertexRepeats(out)) return out;
+  if (!dissolve || !anyVertexRepeats(out)) return out;
   Region dissolved;
   for (Ring& ring : dissolveSeams(out)) {
     simplify(ring);

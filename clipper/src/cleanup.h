@@ -10,6 +10,7 @@ namespace gh::detail {
 
 // Drops repeated points and spike tips (a -> b -> a' folding back on one line), then rings left
 // with fewer than 3 points or with all points on one line; all decided exactly.
-Region cleanedUp(Region region);
+// With dissolveSeams (the exact variant), zero-width seams between rings are dissolved too.
+Region cleanedUp(Region region, bool dissolveSeams);
 
 }  // namespace gh::detail

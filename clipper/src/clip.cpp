@@ -25,20 +25,20 @@ double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-detail::Phase1Result runPhase1(const Region& subject, const Region& clip, Variant variant,
-                               Stats& stats) {
-  switch (variant) {
-    case Variant::Naive:
-      return detail::findIntersections(detail::Operand(subject), detail::Operand(clip),
-                                       detail::AllPairsSearch{}, detail::NaiveArithmetic{}, stats);
-    case Variant::Sweep:
-      return detail::findIntersections(detail::Operand(subject), detail::Operand(clip),
-                                       detail::SweepSearch{}, detail::NaiveArithmetic{}, stats);
-    case Variant::Exact:
-      return detail::findIntersections(detail::Operand(subject), detail::Operand(clip),
-                                       detail::SweepSearch{}, detail::ExactArithmetic{}, stats);
+template <class Arithmetic>
+detail::Phase1Result withSearch(const Region& subject, const Region& clip, bool sweep, Stats& stats) {
+  if (sweep) {
+    return detail::findIntersections(detail::Operand(subject), detail::Operand(clip), detail::SweepSearch{},
+                                     Arithmetic{}, stats);
   }
-  throw std::invalid_argument("unknown variant");
+  return detail::findIntersections(detail::Operand(subject), detail::Operand(clip), detail::AllPairsSearch{},
+                                   Arithmetic{}, stats);
+}
+
+detail::Phase1Result runPhase1(const Region& subject, const Region& clip, const Options& o, Stats& stats) {
+  const bool sweep = o.search == Search::Default ? o.variant != Variant::Naive : o.search == Search::Sweep;
+  if (o.variant == Variant::Exact) return withSearch<detail::ExactArithmetic>(subject, clip, sweep, stats);
+  return withSearch<detail::NaiveArithmetic>(subject, clip, sweep, stats);
 }
 
 }  // namespace
@@ -55,7 +55,7 @@ Region clip(const Region& subject, const Region& clip, Op op, const Options& opt
   local.clipVertices = vertexCount(c);
 
   auto t = Clock::now();
-  const detail::Phase1Result phase1 = runPhase1(s, c, options.variant, local);
+  const detail::Phase1Result phase1 = runPhase1(s, c, options, local);
   local.phase1Seconds = secondsSince(t);
 
   t = Clock::now();
@@ -64,7 +64,7 @@ Region clip(const Region& subject, const Region& clip, Op op, const Options& opt
   local.phase2Seconds = secondsSince(t);
 
   t = Clock::now();
-  Region result = detail::cleanedUp(detail::traceResult(graph, op));
+  Region result = detail::cleanedUp(detail::traceResult(graph, op), options.variant == Variant::Exact);
   local.phase3Seconds = secondsSince(t);
 
   local.outputRings = result.size();

@@ -14,6 +14,10 @@ struct Crossing {
   // crossings along an edge by these; the exact policy orders them by exact predicates.
   double alphaSubject = 0;
   double alphaClip = 0;
+  // Certified bounds |true alpha - alpha| <= err, used by the exact policy to order crossings
+  // without its full predicate when the intervals are disjoint (infinite: no bound).
+  double errSubject = 0;
+  double errClip = 0;
   // The one constructed point shared by both copies of the intersection vertex.
   Point point;
 };

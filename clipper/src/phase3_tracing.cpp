@@ -16,14 +16,8 @@ bool keepsClipPiecesInsideSubject(Op op) {
   return op == Op::Intersection || op == Op::Difference;
 }
 
-Ring copyRing(const VertexGraph& g, std::uint32_t head) {
-  Ring ring;
-  std::uint32_t n = head;
-  do {
-    ring.push_back(g.nodes[n].p);
-    n = g.nodes[n].next;
-  } while (n != head);
-  return ring;
+Ring copyRing(const Operand& op, const RingInfo& ring) {
+  return Ring(op.vertices.begin() + ring.firstVertex, op.vertices.begin() + ring.endVertex);
 }
 
 void traceOneOp(VertexGraph& g, Op op, Region& out) {
@@ -33,47 +27,43 @@ void traceOneOp(VertexGraph& g, Op op, Region& out) {
     return g.nodes[n].entry != (g.isSubjectNode(n) ? flipSubject : flipClip);
   };
   for (Node& node : g.nodes) node.visited = false;
-  const std::size_t bound = 2 * g.nodes.size() + 8;
+  // Every step moves to another intersection vertex; a closed trace visits each at most once.
+  const std::size_t bound = g.nodes.size() + 4;
 
-  for (const RingInfo& ring : g.subjectRings) {
-    if (!ring.hasCrossing) continue;
-    std::uint32_t first = ring.head;
-    do {
-      if (g.nodes[first].isIntersection() && !g.nodes[first].visited) {
-        Ring traced;
-        std::uint32_t current = first;
-        std::size_t steps = 0;
-        for (;;) {
-          Node& at = g.nodes[current];
-          at.visited = g.nodes[at.neighbor].visited = true;
-          traced.push_back(at.p);
-          const bool fwd = forward(current);
-          do {
-            current = fwd ? g.nodes[current].next : g.nodes[current].prev;
-            if (!g.nodes[current].isIntersection()) traced.push_back(g.nodes[current].p);
-            if (++steps > bound) throw ClipFailure("tracing did not close within its bound");
-          } while (!g.nodes[current].isIntersection());
-          current = g.nodes[current].neighbor;  // switch operands
-          if (current == first || g.nodes[current].neighbor == first) break;
-          if (g.nodes[current].visited) {
-            throw ClipFailure(
-                "tracing reached a used intersection vertex (inconsistent entry/exit marks)");
-          }
-        }
-        out.push_back(std::move(traced));
+  for (std::uint32_t first = 0; first < g.firstClipNode; ++first) {
+    if (g.nodes[first].visited) continue;
+    Ring traced;
+    std::uint32_t current = first;
+    for (std::size_t steps = 0;; ++steps) {
+      if (steps > bound) throw ClipFailure("tracing did not close within its bound");
+      Node& at = g.nodes[current];
+      at.visited = g.nodes[at.neighbor].visited = true;
+      traced.push_back(at.p);
+      // Along this operand to the next intersection vertex, then over to the other operand.
+      if (forward(current)) {
+        g.appendRunForward(current, traced);
+        current = g.nodes[current].next;
+      } else {
+        g.appendRunBackward(current, traced);
+        current = g.nodes[current].prev;
       }
-      first = g.nodes[first].next;
-    } while (first != ring.head);
+      current = g.nodes[current].neighbor;
+      if (current == first || g.nodes[current].neighbor == first) break;
+      if (g.nodes[current].visited) {
+        throw ClipFailure("tracing reached a used intersection vertex (inconsistent entry/exit marks)");
+      }
+    }
+    out.push_back(std::move(traced));
   }
 
   for (const RingInfo& ring : g.subjectRings) {
-    if (!ring.hasCrossing && ring.startsInside == keepsSubjectPiecesInsideClip(op)) {
-      out.push_back(copyRing(g, ring.head));
+    if (ring.head == kNone && ring.startsInside == keepsSubjectPiecesInsideClip(op)) {
+      out.push_back(copyRing(*g.subject, ring));
     }
   }
   for (const RingInfo& ring : g.clipRings) {
-    if (!ring.hasCrossing && ring.startsInside == keepsClipPiecesInsideSubject(op)) {
-      out.push_back(copyRing(g, ring.head));
+    if (ring.head == kNone && ring.startsInside == keepsClipPiecesInsideSubject(op)) {
+      out.push_back(copyRing(*g.clip, ring));
     }
   }
 }

@@ -13,8 +13,13 @@
 
 namespace gh {
 
+// Which candidate search phase 1 uses; Default is the variant's own (naive: all pairs; sweep and
+// exact: the sweep). Overriding it isolates the cost of the arithmetic policy in benchmarks.
+enum class Search { Default, AllPairs, Sweep };
+
 struct Options {
   Variant variant = Variant::Naive;
+  Search search = Search::Default;
   // Drop rings with fewer than 3 distinct vertices instead of throwing InvalidInput.
   bool sanitize = false;
 };

@@ -1,0 +1,128 @@
+// Google Benchmark bodies shared by the timing programs: one method on one prepared workload.
+// Peers convert their operands before the timed loop (prepare()); our variants are timed through
+// gh::clip, validation included. After the loop each answer is checked once by the sampling
+// oracle (outside the timed region): a wrong answer is reported as counter "wrong" = 1, never
+// hidden.
+#pragma once
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+#include <string>
+
+#include "ghclip/clip.h"
+#include "ghclip/measure.h"
+#include "ghoracle/exact_oracle.h"
+#include "ghoracle/peer.h"
+#include "ghoracle/sampling_oracle.h"
+#include "ghwork/generators.h"
+
+namespace gh::experiments {
+
+// Our variants by name ("naive", "sweep", "exact"; "exact-allpairs" forces all pairs) or a peer
+// ("clipper6", ...), on a pool of workloads: iteration i clips pool[i % size], as the paper
+// averaged over fresh random polygons. Every answer of the last round through the pool is
+// checked (exact oracle for small inputs, sampling oracle otherwise).
+inline void runMethodOnPool(benchmark::State& state, const std::string& method, const std::vector<work::Workload>& pool,
+                            Op op) {
+  std::vector<Region> results(pool.size());
+  std::vector<Stats> stats(pool.size());
+  std::size_t i = 0;
+  if (const peers::Peer* peer = peers::findPeer(method)) {
+    std::vector<std::unique_ptr<peers::Prepared>> s, c;
+    try {
+      for (const auto& w : pool) s.push_back(peer->prepare(w.subject)), c.push_back(peer->prepare(w.clip));
+    } catch (const std::exception& e) {
+      state.SkipWithError(e.what());
+      return;
+    }
+    for (auto _ : state) {
+      const std::size_t k = i++ % pool.size();
+      results[k] = peer->run(*s[k], *c[k], op);
+      benchmark::DoNotOptimize(results[k].data());
+    }
+  } else {
+    Options o;
+    const auto dash = method.find('-');
+    o.variant = *parseVariant(method.substr(0, dash));
+    if (dash != std::string::npos) o.search = Search::AllPairs;
+    for (auto _ : state) {
+      const std::size_t k = i++ % pool.size();
+      results[k] = clip(pool[k].subject, pool[k].clip, op, o, &stats[k]);
+      benchmark::DoNotOptimize(results[k].data());
+    }
+  }
+  double intersections = 0, outputVertices = 0, wrong = 0, filterFailures = 0, pairs = 0;
+  const std::size_t checked = std::min<std::size_t>(i, pool.size());
+  for (std::size_t k = 0; k < checked; ++k) {
+    intersections += static_cast<double>(stats[k].intersections);
+    filterFailures += static_cast<double>(stats[k].filterFailures);
+    pairs += static_cast<double>(stats[k].candidatePairs);
+    outputVertices += static_cast<double>(vertexCount(results[k]));
+    const auto& w = pool[k];
+    const std::size_t size = vertexCount(w.subject) + vertexCount(w.clip) + vertexCount(results[k]);
+    bool ok;
+    if (size <= 400) {
+      ok = oracle::exactCheck(w.subject, w.clip, op, results[k], {false, false, false}).pass;
+    } else {
+      oracle::SampleOptions so;
+      so.uniformPoints = 400;
+      so.nearVertices = size <= 5000;
+      ok = oracle::sampleCheck(w.subject, w.clip, op, results[k], so).pass();
+    }
+    wrong += ok ? 0 : 1;
+  }
+  const double m = checked ? static_cast<double>(checked) : 1;
+  if (!peers::findPeer(method)) {
+    state.counters["intersections"] = intersections / m;
+    state.counters["filter_failures"] = filterFailures / m;
+    state.counters["candidate_pairs"] = pairs / m;
+  }
+  state.counters["output_vertices"] = outputVertices / m;
+  state.counters["wrong"] = wrong;
+  state.counters["checked"] = static_cast<double>(checked);
+}
+
+// Our variants by name ("naive", "sweep", "exact") or a peer ("clipper6", ...).
+inline void runMethod(benchmark::State& state, const std::string& method, const work::Workload& w, Op op) {
+  Region result;
+  Stats stats;
+  if (const peers::Peer* peer = peers::findPeer(method)) {
+    std::unique_ptr<peers::Prepared> s, c;
+    try {
+      s = peer->prepare(w.subject);
+      c = peer->prepare(w.clip);
+    } catch (const std::exception& e) {
+      state.SkipWithError(e.what());
+      return;
+    }
+    for (auto _ : state) {
+      result = peer->run(*s, *c, op);
+      benchmark::DoNotOptimize(result.data());
+    }
+  } else {
+    // "exact-allpairs": the exact policy with the paper's all-pairs search.
+    Options o;
+    const auto dash = method.find('-');
+    o.variant = *parseVariant(method.substr(0, dash));
+    if (dash != std::string::npos) o.search = Search::AllPairs;
+    for (auto _ : state) {
+      result = clip(w.subject, w.clip, op, o, &stats);
+      benchmark::DoNotOptimize(result.data());
+    }
+    state.counters["intersections"] = static_cast<double>(stats.intersections);
+    state.counters["candidate_pairs"] = static_cast<double>(stats.candidatePairs);
+    state.counters["filter_failures"] = static_cast<double>(stats.filterFailures);
+    state.counters["perturbations"] = static_cast<double>(stats.perturbations);
+  }
+  state.counters["output_vertices"] = static_cast<double>(vertexCount(result));
+  oracle::SampleOptions so;
+  so.uniformPoints = 400;
+  // Probing around every vertex costs (vertices x edges): only for small answers.
+  so.nearVertices = vertexCount(w.subject) + vertexCount(w.clip) + vertexCount(result) <= 5000;
+  state.counters["wrong"] = oracle::sampleCheck(w.subject, w.clip, op, result, so).pass() ? 0 : 1;
+}
+
+}  // namespace gh::experiments
