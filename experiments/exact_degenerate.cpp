@@ -25,6 +25,7 @@ namespace {
 struct Tally {
   long checks = 0, fails = 0, clipFailures = 0, zeroError = 0;
   double worstRelative = 0;
+  std::string worstCase;  // the input and operation of the worst relative error
   unsigned long long filterFailures = 0, predicateCalls = 0;
   std::string firstFailure;
 };
@@ -82,7 +83,11 @@ int run(int argc, char** argv) {
               for (std::size_t k = 0; k < bits.subject.size(); ++k) cellsS += bits.subject[k], cellsC += bits.clip[k];
               relative = verdict.errorArea / std::max({1.0, cellsS, cellsC});
             }
-            t.worstRelative = std::max(t.worstRelative, relative);
+            if (relative > t.worstRelative) {
+              t.worstRelative = relative;
+              t.worstCase = std::string(name(op)) + " of `" + io::writeWkt(w.subject) + "` and `" +
+                            io::writeWkt(w.clip) + "` (seed " + std::to_string(seed) + ", n " + std::to_string(n) + ")";
+            }
             if (t.firstFailure.empty()) {
               t.firstFailure = std::string(name(op)) + " of `" + io::writeWkt(w.subject) + "` and `" + io::writeWkt(w.clip) + "`";
             }
@@ -111,6 +116,11 @@ int run(int argc, char** argv) {
        << " | " << nv.fails << " | " << nv.clipFailures << " | " << nv.zeroError << " | " << nv.worstRelative << " |\n";
   }
   md << "\n**exact: " << exactFails << " failures in " << total << " checks.**\n";
+  md << "\n## The naive variant's worst case per family\n\n";
+  for (const std::string family : kFamilies) {
+    const Tally& nv = tallies[family][Variant::Naive];
+    if (!nv.worstCase.empty()) md << "- **" << family << "** (relative error " << nv.worstRelative << "): " << nv.worstCase << "\n";
+  }
   for (const std::string family : kFamilies) {
     const Tally& e = tallies[family][Variant::Exact];
     if (!e.firstFailure.empty()) md << "\nFirst exact failure in " << family << ": " << e.firstFailure << "\n";

@@ -26,19 +26,19 @@ double secondsSince(Clock::time_point t) {
 }
 
 template <class Arithmetic>
-detail::Phase1Result withSearch(const Region& subject, const Region& clip, bool sweep, Stats& stats) {
+detail::Phase1Result withSearch(detail::Operand subject, detail::Operand clip, bool sweep, Stats& stats) {
   if (sweep) {
-    return detail::findIntersections(detail::Operand(subject), detail::Operand(clip), detail::SweepSearch{},
-                                     Arithmetic{}, stats);
+    return detail::findIntersections(std::move(subject), std::move(clip), detail::SweepSearch{}, Arithmetic{}, stats);
   }
-  return detail::findIntersections(detail::Operand(subject), detail::Operand(clip), detail::AllPairsSearch{},
-                                   Arithmetic{}, stats);
+  return detail::findIntersections(std::move(subject), std::move(clip), detail::AllPairsSearch{}, Arithmetic{}, stats);
 }
 
-detail::Phase1Result runPhase1(const Region& subject, const Region& clip, const Options& o, Stats& stats) {
+detail::Phase1Result runPhase1(detail::Operand subject, detail::Operand clip, const Options& o, Stats& stats) {
   const bool sweep = o.search == Search::Default ? o.variant != Variant::Naive : o.search == Search::Sweep;
-  if (o.variant == Variant::Exact) return withSearch<detail::ExactArithmetic>(subject, clip, sweep, stats);
-  return withSearch<detail::NaiveArithmetic>(subject, clip, sweep, stats);
+  if (o.variant == Variant::Exact) {
+    return withSearch<detail::ExactArithmetic>(std::move(subject), std::move(clip), sweep, stats);
+  }
+  return withSearch<detail::NaiveArithmetic>(std::move(subject), std::move(clip), sweep, stats);
 }
 
 }  // namespace
@@ -48,14 +48,14 @@ bool isImplemented(Variant) { return true; }
 Region clip(const Region& subject, const Region& clip, Op op, const Options& options,
             Stats* stats) {
   Stats local;
-  const OnBadRing onBadRing = options.sanitize ? OnBadRing::Drop : OnBadRing::Throw;
-  const Region s = normalized(subject, onBadRing);
-  const Region c = normalized(clip, onBadRing);
-  local.subjectVertices = vertexCount(s);
-  local.clipVertices = vertexCount(c);
+  // Validation copies the input once, straight into phase 1's flat arrays.
+  detail::Operand s(subject, options.sanitize);
+  detail::Operand c(clip, options.sanitize);
+  local.subjectVertices = s.size();
+  local.clipVertices = c.size();
 
   auto t = Clock::now();
-  const detail::Phase1Result phase1 = runPhase1(s, c, options, local);
+  const detail::Phase1Result phase1 = runPhase1(std::move(s), std::move(c), options, local);
   local.phase1Seconds = secondsSince(t);
 
   t = Clock::now();

@@ -27,4 +27,34 @@ Operand::Operand(const Region& region) {
   ringStart.push_back(static_cast<std::uint32_t>(vertices.size()));
 }
 
+Operand::Operand(const Region& region, bool dropBadRings) {
+  std::size_t total = 0;
+  for (const Ring& ring : region) total += ring.size();
+  if (total >= std::numeric_limits<std::uint32_t>::max() / 4) {
+    throw std::length_error("ghclip: operand has too many vertices");
+  }
+  vertices.reserve(total);
+  ringStart.reserve(region.size() + 1);
+  for (std::size_t r = 0; r < region.size(); ++r) {
+    const Ring& ring = region[r];
+    checkCoordinates(ring, r);
+    const std::size_t first = vertices.size();
+    for (const Point& p : ring) {
+      if (vertices.size() == first || vertices.back() != p) vertices.push_back(p);
+    }
+    while (vertices.size() > first + 1 && vertices.back() == vertices[first]) vertices.pop_back();
+    if (!hasThreeDistinct(vertices.data() + first, vertices.data() + vertices.size())) {
+      if (!dropBadRings) throwTooFewVertices(r);
+      vertices.resize(first);
+      continue;
+    }
+    ringStart.push_back(static_cast<std::uint32_t>(first));
+  }
+  ringStart.push_back(static_cast<std::uint32_t>(vertices.size()));
+  next.resize(vertices.size());
+  for (std::size_t k = 0; k + 1 < ringStart.size(); ++k) {
+    for (std::uint32_t v = ringStart[k]; v < ringStart[k + 1]; ++v) next[v] = v + 1 < ringStart[k + 1] ? v + 1 : ringStart[k];
+  }
+}
+
 }  // namespace gh::detail

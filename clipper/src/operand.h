@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ghclip/region.h"
+#include "ghclip/validate.h"
 
 namespace gh::detail {
 
@@ -14,7 +15,11 @@ struct Operand {
   std::vector<std::uint32_t> next;       // next vertex in the same ring
   std::vector<std::uint32_t> ringStart;  // first vertex of each ring, plus one past the end
 
+  // Copies the region as it is (callers that validated it already).
   explicit Operand(const Region& region);
+  // Validates while copying, with normalized()'s rules: drops consecutive duplicates and the
+  // closing vertex, throws InvalidInput (or drops the ring) like normalized() does.
+  Operand(const Region& region, bool dropBadRings);
 
   std::size_t ringCount() const { return ringStart.size() - 1; }
   std::size_t size() const { return vertices.size(); }

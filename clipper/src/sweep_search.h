@@ -66,63 +66,71 @@ void sweepOverlaps(const std::vector<EdgeBox>& a, const std::vector<EdgeBox>& b,
   }
 }
 
-// An x-monotone run of consecutive ring edges, its edges listed by increasing x.
-struct MonotoneChain {
-  std::vector<std::uint32_t> edges;  // sorted by x: consecutive x-intervals touch, never overlap
-  EdgeBox box;                        // union of the edge boxes; box.edge = chain index
+// The x-monotone runs of consecutive ring edges of one operand, in one flat array: chain k's
+// edges are edges[begin[k] .. begin[k+1]), listed by increasing x (consecutive x-intervals touch,
+// never overlap), and box[k] (with box[k].edge = k) bounds them.
+struct MonotoneChains {
+  std::vector<std::uint32_t> edges;
+  std::vector<std::uint32_t> begin;
+  std::vector<EdgeBox> box;
+  std::size_t size() const { return box.size(); }
 };
 
-inline std::vector<MonotoneChain> monotoneChains(const Operand& op) {
-  std::vector<MonotoneChain> chains;
+inline MonotoneChains monotoneChains(const Operand& op) {
+  MonotoneChains c;
+  c.edges.reserve(op.size());
+  auto close = [&c](int direction) {
+    if (direction < 0) std::reverse(c.edges.begin() + c.begin.back(), c.edges.end());
+  };
   for (std::size_t ring = 0; ring < op.ringCount(); ++ring) {
     int direction = 0;  // +1 increasing x, -1 decreasing, 0 not yet known (vertical so far)
     for (std::uint32_t e = op.ringStart[ring]; e < op.ringStart[ring + 1]; ++e) {
       const Point a = op.from(e), b = op.to(e);
       const int d = (b.x > a.x) - (b.x < a.x);
-      const bool starts = e == op.ringStart[ring] || (d != 0 && direction != 0 && d != direction);
-      if (starts) {
-        if (!chains.empty() && direction < 0) {
-          std::reverse(chains.back().edges.begin(), chains.back().edges.end());
-        }
-        chains.push_back({{}, {a.x, a.x, a.y, a.y, static_cast<std::uint32_t>(chains.size())}});
+      if (e == op.ringStart[ring] || (d != 0 && direction != 0 && d != direction)) {
+        if (!c.begin.empty()) close(direction);
+        c.begin.push_back(static_cast<std::uint32_t>(c.edges.size()));
+        c.box.push_back({a.x, a.x, a.y, a.y, static_cast<std::uint32_t>(c.box.size())});
         direction = 0;
       }
       if (direction == 0) direction = d;
-      MonotoneChain& c = chains.back();
       c.edges.push_back(e);
-      c.box.minX = std::min({c.box.minX, a.x, b.x}), c.box.maxX = std::max({c.box.maxX, a.x, b.x});
-      c.box.minY = std::min({c.box.minY, a.y, b.y}), c.box.maxY = std::max({c.box.maxY, a.y, b.y});
+      EdgeBox& box = c.box.back();
+      box.minX = std::min({box.minX, a.x, b.x}), box.maxX = std::max({box.maxX, a.x, b.x});
+      box.minY = std::min({box.minY, a.y, b.y}), box.maxY = std::max({box.maxY, a.y, b.y});
     }
-    if (!chains.empty() && direction < 0) std::reverse(chains.back().edges.begin(), chains.back().edges.end());
+    if (!c.begin.empty()) close(direction);
   }
-  return chains;
+  c.begin.push_back(static_cast<std::uint32_t>(c.edges.size()));
+  return c;
 }
 
-// All edge pairs of two monotone chains with overlapping closed boxes. Along a chain the edges'
-// x-intervals are consecutive, so both minX and maxX are non-decreasing: binary search finds where
-// the chains' common x-range starts, and for each edge of `a` the edges of `b` overlapping it in
-// x form a contiguous run that only moves right.
+// All edge pairs of chain i of `a` and chain j of `b` with overlapping closed boxes. Along a chain
+// both minX and maxX are non-decreasing: binary search finds where the chains' common x-range
+// starts, and for each edge of a the overlapping edges of b are a contiguous run that only moves
+// right.
 template <class Visit>
-void walkChainPair(const Operand& opA, const MonotoneChain& a, const Operand& opB, const MonotoneChain& b,
-                   Visit&& visit) {
+void walkChainPair(const Operand& opA, const MonotoneChains& a, std::uint32_t i, const Operand& opB,
+                   const MonotoneChains& b, std::uint32_t j, Visit&& visit) {
   auto box = [](const Operand& op, std::uint32_t e) {
     const Point p = op.from(e), q = op.to(e);
     return EdgeBox{std::min(p.x, q.x), std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y), e};
   };
-  const double from = std::max(a.box.minX, b.box.minX);
-  auto startOf = [&](const Operand& op, const MonotoneChain& c) {
-    return static_cast<std::size_t>(
-        std::partition_point(c.edges.begin(), c.edges.end(),
-                             [&](std::uint32_t e) { return box(op, e).maxX < from; }) -
-        c.edges.begin());
-  };
-  std::size_t first = startOf(opB, b);
-  for (std::size_t i = startOf(opA, a); i < a.edges.size(); ++i) {
-    const EdgeBox ba = box(opA, a.edges[i]);
-    if (ba.minX > b.box.maxX) break;
-    while (first < b.edges.size() && box(opB, b.edges[first]).maxX < ba.minX) ++first;
-    for (std::size_t k = first; k < b.edges.size(); ++k) {
-      const EdgeBox bb = box(opB, b.edges[k]);
+  const double from = std::max(a.box[i].minX, b.box[j].minX);
+  const std::uint32_t* aBegin = a.edges.data() + a.begin[i];
+  const std::uint32_t* aEnd = a.edges.data() + a.begin[i + 1];
+  const std::uint32_t* bBegin = b.edges.data() + b.begin[j];
+  const std::uint32_t* bEnd = b.edges.data() + b.begin[j + 1];
+  const double bMaxX = b.box[j].maxX;
+  const std::uint32_t* first =
+      std::partition_point(bBegin, bEnd, [&](std::uint32_t e) { return box(opB, e).maxX < from; });
+  for (const std::uint32_t* ea = std::partition_point(aBegin, aEnd, [&](std::uint32_t e) { return box(opA, e).maxX < from; });
+       ea != aEnd; ++ea) {
+    const EdgeBox ba = box(opA, *ea);
+    if (ba.minX > bMaxX) break;
+    while (first != bEnd && box(opB, *first).maxX < ba.minX) ++first;
+    for (const std::uint32_t* eb = first; eb != bEnd; ++eb) {
+      const EdgeBox bb = box(opB, *eb);
       if (bb.minX > ba.maxX) break;
       if (bb.minY <= ba.maxY && ba.minY <= bb.maxY) visit(ba.edge, bb.edge);
     }
@@ -135,18 +143,14 @@ void walkChainPair(const Operand& opA, const MonotoneChain& a, const Operand& op
 struct SweepSearch {
   template <class Visit>
   void forEachCandidate(const Operand& subject, const Operand& clip, Visit&& visit) const {
-    const std::vector<MonotoneChain> cs = monotoneChains(subject), cc = monotoneChains(clip);
-    std::vector<EdgeBox> bs(cs.size()), bc(cc.size());
-    for (std::size_t i = 0; i < cs.size(); ++i) bs[i] = cs[i].box;
-    for (std::size_t i = 0; i < cc.size(); ++i) bc[i] = cc[i].box;
+    const MonotoneChains cs = monotoneChains(subject), cc = monotoneChains(clip);
+    std::vector<EdgeBox> bs = cs.box, bc = cc.box;
     auto byMinX = [](const EdgeBox& p, const EdgeBox& q) {
       return p.minX < q.minX || (p.minX == q.minX && p.edge < q.edge);
     };
     std::sort(bs.begin(), bs.end(), byMinX);
     std::sort(bc.begin(), bc.end(), byMinX);
-    sweepOverlaps(bs, bc, [&](std::uint32_t i, std::uint32_t j) {
-      walkChainPair(subject, cs[i], clip, cc[j], visit);
-    });
+    sweepOverlaps(bs, bc, [&](std::uint32_t i, std::uint32_t j) { walkChainPair(subject, cs, i, clip, cc, j, visit); });
   }
 };
 

@@ -14,6 +14,10 @@ std::string where(std::size_t ring, std::size_t vertex) {
   return s.str();
 }
 
+}  // namespace
+
+namespace detail {
+
 void checkCoordinates(const Ring& ring, std::size_t r) {
   for (std::size_t v = 0; v < ring.size(); ++v) {
     for (double c : {ring[v].x, ring[v].y}) {
@@ -31,36 +35,40 @@ void checkCoordinates(const Ring& ring, std::size_t r) {
 
 // At least 3 distinct vertices? One pass: the first vertex, one different from it, and one
 // different from both (no sort: this runs on every input of every clip).
-bool hasThreeDistinct(const Ring& ring) {
-  if (ring.size() < 3) return false;
-  const Point a = ring[0];
-  std::size_t i = 1;
-  while (i < ring.size() && ring[i] == a) ++i;
-  if (i == ring.size()) return false;
-  const Point b = ring[i];
-  for (; i < ring.size(); ++i) {
-    if (ring[i] != a && ring[i] != b) return true;
+bool hasThreeDistinct(const Point* begin, const Point* end) {
+  if (end - begin < 3) return false;
+  const Point a = *begin;
+  const Point* i = begin + 1;
+  while (i != end && *i == a) ++i;
+  if (i == end) return false;
+  const Point b = *i;
+  for (; i != end; ++i) {
+    if (*i != a && *i != b) return true;
   }
   return false;
 }
 
-}  // namespace
+void throwTooFewVertices(std::size_t r) {
+  throw InvalidInput("ring " + std::to_string(r + 1) + " has fewer than 3 distinct vertices");
+}
+
+}  // namespace detail
 
 Region normalized(const Region& region, OnBadRing onBadRing) {
   Region out;
   out.reserve(region.size());
   for (std::size_t r = 0; r < region.size(); ++r) {
     const Ring& in = region[r];
-    checkCoordinates(in, r);
+    detail::checkCoordinates(in, r);
     Ring ring;
     ring.reserve(in.size());
     for (const Point& p : in) {
       if (ring.empty() || ring.back() != p) ring.push_back(p);
     }
     while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
-    if (!hasThreeDistinct(ring)) {
+    if (!detail::hasThreeDistinct(ring.data(), ring.data() + ring.size())) {
       if (onBadRing == OnBadRing::Drop) continue;
-      throw InvalidInput("ring " + std::to_string(r + 1) + " has fewer than 3 distinct vertices");
+      detail::throwTooFewVertices(r);
     }
     out.push_back(std::move(ring));
   }

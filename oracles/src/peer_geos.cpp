@@ -47,12 +47,12 @@ struct GeosOperand : Prepared {
 
 GEOSGeometry* linearRing(const Ring& ring) {
   const auto h = context().get();
-  std::vector<double> xy;
-  xy.reserve(2 * ring.size() + 2);
-  for (const Point& p : ring) xy.push_back(p.x), xy.push_back(p.y);
-  xy.push_back(ring.front().x), xy.push_back(ring.front().y);
-  GEOSCoordSequence* seq =
-      GEOSCoordSeq_copyFromBuffer_r(h, xy.data(), static_cast<unsigned>(ring.size() + 1), 0, 0);
+  const auto n = static_cast<unsigned>(ring.size());
+  GEOSCoordSequence* seq = GEOSCoordSeq_create_r(h, n + 1, 2);
+  for (unsigned i = 0; i <= n; ++i) {
+    const Point& p = ring[i % n];  // closed: the first point again at the end
+    GEOSCoordSeq_setXY_r(h, seq, i, p.x, p.y);
+  }
   return GEOSGeom_createLinearRing_r(h, seq);
 }
 
@@ -68,10 +68,13 @@ void appendRings(const GEOSGeometry* g, Region& out) {
     const GEOSCoordSequence* seq = GEOSGeom_getCoordSeq_r(h, ring);
     unsigned size = 0;
     GEOSCoordSeq_getSize_r(h, seq, &size);
-    std::vector<double> xy(2 * size);
-    GEOSCoordSeq_copyToBuffer_r(h, seq, xy.data(), 0, 0);
     Ring r;
-    for (unsigned k = 0; k + 1 < size; ++k) r.push_back({xy[2 * k], xy[2 * k + 1]});  // drop closing point
+    r.reserve(size);
+    for (unsigned k = 0; k + 1 < size; ++k) {  // the closing point is dropped
+      Point p;
+      GEOSCoordSeq_getXY_r(h, seq, k, &p.x, &p.y);
+      r.push_back(p);
+    }
     out.push_back(std::move(r));
   };
   add(GEOSGetExteriorRing_r(h, g));

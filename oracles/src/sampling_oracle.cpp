@@ -69,7 +69,10 @@ SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, cons
   // Halves first: the extent of coordinates near 2^500 must not overflow.
   const double extent = std::max({(box.maxX / 2 - box.minX / 2) * 2, (box.maxY / 2 - box.minY / 2) * 2,
                                   std::numeric_limits<double>::min()});
-  v.delta = std::ldexp(extent, -32);
+  // Rounding in the crossing tests scales with the coordinates' magnitude, not only the extent:
+  // far from the origin (1e9 + a unit square) the second term dominates.
+  const double magnitude = std::max({std::abs(box.minX), std::abs(box.maxX), std::abs(box.minY), std::abs(box.maxY)});
+  v.delta = std::ldexp(extent, -32) + std::ldexp(magnitude, -44);
 
   auto check = [&](Point p) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;

@@ -20,4 +20,12 @@ enum class OnBadRing {
 // distinct vertices. An empty region is valid: it is the empty set.
 Region normalized(const Region& region, OnBadRing onBadRing = OnBadRing::Throw);
 
+namespace detail {
+// The pieces of normalized(), for code that validates while copying into its own layout.
+// Throws InvalidInput naming ring r for a non-finite or too large coordinate.
+void checkCoordinates(const Ring& ring, std::size_t r);
+bool hasThreeDistinct(const Point* begin, const Point* end);
+[[noreturn]] void throwTooFewVertices(std::size_t r);
+}  // namespace detail
+
 }  // namespace gh

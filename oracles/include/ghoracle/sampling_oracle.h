@@ -3,8 +3,9 @@
 // Points are drawn (seeded) uniformly in the joint bounding box of S, C and R, and around every
 // vertex of S, C and R at radii extent * 2^-8, 2^-14, 2^-20, 2^-26 in eight directions (points
 // near vertices catch moved vertices and slivers that uniform points miss). Each point gets
-// three even-odd crossing tests; a point within delta = extent * 2^-32 of any edge of S, C or R
-// is skipped, since there a correct answer's rounding may legitimately disagree.
+// three even-odd crossing tests; a point within delta = extent * 2^-32 + M * 2^-44 of any edge of
+// S, C or R (M the largest |coordinate|, about 100 ulps of it) is skipped, since there a correct
+// answer's rounding, or the tests' own, may legitimately disagree.
 #pragma once
 
 #include <cstdint>

@@ -1,0 +1,17 @@
+#!/bin/bash -eu
+# Builds every fuzz target the way OSS-Fuzz and ClusterFuzzLite expect: compilers and flags from
+# $CC $CXX $CFLAGS $CXXFLAGS, the engine from $LIB_FUZZING_ENGINE, sources in $SRC, binaries,
+# seed corpora (zipped) and dictionaries into $OUT.
+SOURCE="${SRC}/ghclip"
+[[ -d "$SOURCE" ]] || SOURCE="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="${WORK:-/tmp}/ghclip-fuzz-build"
+cmake -S "$SOURCE" -B "$BUILD" -G Ninja -DGHCLIP_FUZZ=ON -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_C_COMPILER="$CC" -DCMAKE_CXX_COMPILER="$CXX" \
+  -DCMAKE_C_FLAGS="$CFLAGS" -DCMAKE_CXX_FLAGS="$CXXFLAGS"
+TARGETS=(fuzz_clip_naive fuzz_clip_sweep fuzz_clip_exact fuzz_clip_exact_oracle fuzz_diff_vatti fuzz_read)
+cmake --build "$BUILD" --target "${TARGETS[@]}"
+for t in "${TARGETS[@]}"; do
+  cp "$BUILD/bin/$t" "$OUT/"
+  cp "$SOURCE/fuzz/$t.dict" "$OUT/$t.dict"
+  (cd "$SOURCE/fuzz/${t}_seed_corpus" && zip -q -r "$OUT/${t}_seed_corpus.zip" .)
+done

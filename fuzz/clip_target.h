@@ -1,0 +1,55 @@
+// The body of fuzz_clip_<variant>: all five operations on a fuzzed pair; no crash, no hang, no
+// leak (sanitizers), finite output, the cheap invariants, and the sampling oracle agrees.
+// For the exact variant any disagreement traps; for naive and sweep it is recorded, and only
+// crashes and hangs stop the campaign.
+#pragma once
+
+#include <cmath>
+
+#include "findings.h"
+#include "fuzz_input.h"
+#include "ghclip/clip.h"
+#include "ghclip/errors.h"
+#include "ghoracle/invariants.h"
+#include "ghoracle/sampling_oracle.h"
+
+namespace gh::fuzz {
+
+inline int clipTarget(const char* target, Variant variant, const std::uint8_t* data, std::size_t size) {
+  const Pair p = pair(data, size, 3, 16);
+  const bool strict = variant == Variant::Exact;
+  for (Op op : kAllOps) {
+    Options o;
+    o.variant = variant;
+    Region r;
+    try {
+      r = clip(p.subject, p.clip, op, o);
+    } catch (const InvalidInput&) {
+      return 0;  // refused cleanly: the right answer to bad input
+    } catch (const ClipFailure& e) {
+      if (strict) trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
+      record(target, std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
+      continue;
+    }
+    for (const Ring& ring : r) {
+      for (const Point& q : ring) {
+        if (!std::isfinite(q.x) || !std::isfinite(q.y)) trap("non-finite output", p.subject, p.clip, op);
+      }
+    }
+    const auto violations = oracle::invariantViolations(p.subject, p.clip, op, r);
+    if (!violations.empty()) {
+      if (strict) trap("invariant: " + violations.front(), p.subject, p.clip, op);
+      record(target, "invariant: " + violations.front(), p.subject, p.clip, op);
+    }
+    oracle::SampleOptions so;
+    so.uniformPoints = 200;
+    const auto v = oracle::sampleCheck(p.subject, p.clip, op, r, so);
+    if (!v.pass()) {
+      if (strict) trap("sampling oracle disagrees", p.subject, p.clip, op);
+      record(target, "sampling oracle disagrees", p.subject, p.clip, op);
+    }
+  }
+  return 0;
+}
+
+}  // namespace gh::fuzz
