@@ -117,7 +117,7 @@ int run(int argc, char** argv) {
   gh::io::writeText(base + ".dat", data.str());
   gp << "set terminal svg size 800,560 font 'sans,12'\nset output '" << base << ".svg'\nset logscale xy\n"
      << "set xlabel 'n (vertices per polygon)'\nset ylabel 'median time per intersection (ms)'\n"
-     << "set title 'The paper'\"'\"'s random workload'\nset key top left\nset grid\nplot ";
+     << "set title \"The paper's random workload\"\nset key top left\nset grid\nplot ";
   for (std::size_t i = 0; i < std::size(methods); ++i) {
     gp << (i ? ", " : "") << "'" << base << ".dat' index " << i << " using 1:2 with linespoints title '" << labels[i] << "'";
   }

@@ -209,7 +209,10 @@ std::string rationalText(const EFT& v) {
 }  // namespace
 
 double ExactVerdict::relativeError() const {
-  const double scale = std::max({subjectArea, clipArea, expectedArea, resultArea});
+  double scale = std::max({subjectArea, clipArea, expectedArea, resultArea});
+  // Operands of zero area (collinear rings) leave no area to compare with: then the size of the
+  // problem is its bounding box.
+  if (scale <= boxArea * 0x1p-40) scale = boxArea;
   return scale > 0 ? errorArea / scale : (errorArea > 0 ? 1.0 : 0.0);
 }
 
@@ -247,6 +250,17 @@ ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const 
   v.resultArea = CGAL::to_double(got);
   v.subjectArea = CGAL::to_double(areaS);
   v.clipArea = CGAL::to_double(areaC);
+  double minX = 0, minY = 0, maxX = 0, maxY = 0;
+  bool any = false;
+  for (const Region* r : {&subject, &clip}) {
+    for (const Ring& ring : *r) {
+      for (const Point& p : ring) {
+        if (!any) minX = maxX = p.x, minY = maxY = p.y, any = true;
+        minX = std::min(minX, p.x), maxX = std::max(maxX, p.x), minY = std::min(minY, p.y), maxY = std::max(maxY, p.y);
+      }
+    }
+  }
+  v.boxArea = (maxX / 2 - minX / 2) * (maxY / 2 - minY / 2) * 4;
   v.areaUncertainty = std::max(expected.sup() - expected.inf(), got.sup() - got.inf());
   v.errorArea = CGAL::to_double(error);
   v.tolerance = roundingTolerance(subject, clip, result);

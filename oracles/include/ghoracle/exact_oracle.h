@@ -22,6 +22,7 @@ struct ExactVerdict {
   double resultArea = 0;      // even-odd area of R, likewise
   double subjectArea = 0;     // even-odd areas of the operands, likewise
   double clipArea = 0;
+  double boxArea = 0;         // area of the bounding box of S and C
   double areaUncertainty = 0;  // width of those intervals (the true values lie within)
   double errorArea = 0;       // area of the symmetric difference (rounded exact value, or the
                               // midpoint of a certified interval without exactErrorArea)
@@ -33,8 +34,9 @@ struct ExactVerdict {
   std::size_t faces = 0, vertices = 0, edges = 0;
   double seconds = 0;
 
-  // errorArea relative to the largest of the operands', expected and result areas
-  // (0 when all are 0): a scale that stays meaningful when the expected answer is empty.
+  // errorArea relative to the largest of the operands', expected and result areas (a scale that
+  // stays meaningful when the expected answer is empty), or to the bounding box of S and C when
+  // all of those vanish (operands of zero area).
   double relativeError() const;
 };
 
