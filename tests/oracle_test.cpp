@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "ghclip/clip.h"
 #include "ghclip/measure.h"
@@ -165,6 +166,33 @@ TEST(Oracles, AgreeOnTheRandomWorkload) {
   RecordProperty("agreements", agree);
   EXPECT_GT(passes, 300);
   EXPECT_GT(fails, 300);
+}
+
+}  // namespace
+}  // namespace gh
+
+namespace gh {
+namespace {
+
+// Regression (fuzz_clip_exact, fuzz/regressions/fuzz_clip_exact/evenodd-area-nan): the exact
+// variant's union of these rings is right (the exact oracle passes it), but the floating-point
+// evenOddArea measured it as NaN: exact orientations said two nearly parallel edges cross while
+// their double determinants cancelled, and the crossing's x became 0/0.
+TEST(Measure, EvenOddAreaStaysFiniteWhereDeterminantsCancel) {
+  const Region s{{{3, 4}, {1, 8}, {8, 7}, {0, 0}, {4, 6}},
+                 {{5, 6}, {3, 3}, {8, 2}, {3, 5}, {7, 3}, {1, 4}, {4, 0}, {0, 6}, {7, 0}, {0, 8}, {2, 1}, {5, 2}, {8, 1}, {0, 2}},
+                 {{4, 3}, {4, 2}, {5, 2}, {5, 0}}};
+  const Region c{{{4, 0}, {6, 4}, {7, 1}, {3, 7}},
+                 {{0, 8}, {2, 1}, {5, 2}, {8, 1}, {0, 2}, {8, 4}, {3, 4}, {2, 5}, {2, 5}, {0, 1}},
+                 {{4, 0}, {6, 4}, {4, 1}, {4, 8}}};
+  Options o;
+  o.variant = Variant::Exact;
+  const Region r = clip(s, c, Op::Union, o);
+  const auto v = oracle::exactCheck(s, c, Op::Union, r);
+  EXPECT_TRUE(v.pass);
+  const double area = evenOddArea(r);
+  ASSERT_TRUE(std::isfinite(area));
+  EXPECT_NEAR(area, v.expectedArea, 1e-9 * v.expectedArea);
 }
 
 }  // namespace
