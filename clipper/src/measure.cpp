@@ -29,6 +29,11 @@ bool properCrossingX(const Segment& s, const Segment& t, double& x) {
   const double d2 = (s.b.x - s.a.x) * (t.b.y - s.a.y) - (s.b.y - s.a.y) * (t.b.x - s.a.x);
   const double alpha = d1 / (d1 - d2);  // along t
   x = t.a.x + alpha * (t.b.x - t.a.x);
+  // The crossing lies in both segments' x-ranges. Nearly parallel segments can cancel d1 - d2
+  // to 0 in doubles although they cross (0/0), or round x just outside: clamp into the range.
+  const double lo = std::max(s.a.x, t.a.x), hi = std::min(s.b.x, t.b.x);
+  if (!(x >= lo)) x = std::isnan(x) ? (lo + hi) / 2 : lo;
+  if (x > hi) x = hi;
   return true;
 }
 
