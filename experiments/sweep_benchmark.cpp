@@ -6,7 +6,6 @@
 // Bounded (default): n = 10^3..10^5 (naive to 3*10^4 plus one run at 10^5); --full: to 10^6.
 #include <benchmark/benchmark.h>
 
-#include <cstring>
 #include <map>
 #include <string>
 #include <vector>
@@ -39,23 +38,14 @@ void registerFamily(const std::string& workload, const std::string& method, cons
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool full = false;
-  std::vector<char*> args;
-  for (int i = 0; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--full") == 0) {
-      full = true;
-    } else {
-      args.push_back(argv[i]);
-    }
-  }
-  int n = static_cast<int>(args.size());
+  const bool full = experiments::takeFullFlag(argc, argv);
   const std::vector<long> fast = full ? std::vector<long>{1000, 10000, 100000, 1000000} : std::vector<long>{1000, 10000, 100000};
   for (const char* m : {"sweep", "exact", "clipper6", "geos", "boost"}) registerFamily("circles", m, fast);
   registerFamily("circles", "cgal", full ? std::vector<long>{1000, 10000, 100000, 1000000} : std::vector<long>{1000, 10000, 100000});
   registerFamily("circles", "naive", {1000, 3000, 10000, 30000, 100000});
   // The paper's workload: every box overlaps every other, so the sweep reports ~n*m pairs too.
   for (const char* m : {"sweep", "naive", "exact", "exact-allpairs"}) registerFamily("random", m, {10, 100, 1000});
-  benchmark::Initialize(&n, args.data());
+  benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

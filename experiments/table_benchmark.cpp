@@ -8,7 +8,6 @@
 //   table_benchmark [--full] [google benchmark flags]
 #include <benchmark/benchmark.h>
 
-#include <cstring>
 #include <map>
 #include <string>
 #include <vector>
@@ -43,15 +42,7 @@ void add(const std::string& table, const std::string& workload, const std::strin
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool full = false;
-  std::vector<char*> args;
-  for (int i = 0; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--full") == 0) {
-      full = true;
-    } else {
-      args.push_back(argv[i]);
-    }
-  }
+  const bool full = experiments::takeFullFlag(argc, argv);
   std::vector<long> t1{10, 20, 50, 100, 200, 500, 1000, 2000};
   if (full) t1.push_back(5000);
   for (Op op : kAllOps) {
@@ -71,8 +62,7 @@ int main(int argc, char** argv) {
       }
     }
   }
-  int n = static_cast<int>(args.size());
-  benchmark::Initialize(&n, args.data());
+  benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -96,44 +96,24 @@ inline void runMethodOnPool(benchmark::State& state, const std::string& method, 
   state.counters["checked"] = static_cast<double>(checked);
 }
 
-// Our variants by name ("naive", "sweep", "exact") or a peer ("clipper6", ...).
+// One workload: a pool of one.
 inline void runMethod(benchmark::State& state, const std::string& method, const work::Workload& w, Op op) {
-  Region result;
-  Stats stats;
-  if (const peers::Peer* peer = peers::findPeer(method)) {
-    std::unique_ptr<peers::Prepared> s, c;
-    try {
-      s = peer->prepare(w.subject);
-      c = peer->prepare(w.clip);
-    } catch (const std::exception& e) {
-      state.SkipWithError(e.what());
-      return;
+  runMethodOnPool(state, method, std::vector<work::Workload>{w}, op);
+}
+
+// Removes "--full" from argv (Google Benchmark rejects flags it does not know); true if present.
+inline bool takeFullFlag(int& argc, char** argv) {
+  bool full = false;
+  int kept = 0;
+  for (int i = 0; i < argc; ++i) {
+    if (std::string(argv[i]) == "--full") {
+      full = true;
+    } else {
+      argv[kept++] = argv[i];
     }
-    for (auto _ : state) {
-      result = peer->run(*s, *c, op);
-      benchmark::DoNotOptimize(result.data());
-    }
-  } else {
-    // "exact-allpairs": the exact policy with the paper's all-pairs search.
-    Options o;
-    const auto dash = method.find('-');
-    o.variant = *parseVariant(method.substr(0, dash));
-    if (dash != std::string::npos) o.search = Search::AllPairs;
-    for (auto _ : state) {
-      result = clip(w.subject, w.clip, op, o, &stats);
-      benchmark::DoNotOptimize(result.data());
-    }
-    state.counters["intersections"] = static_cast<double>(stats.intersections);
-    state.counters["candidate_pairs"] = static_cast<double>(stats.candidatePairs);
-    state.counters["filter_failures"] = static_cast<double>(stats.filterFailures);
-    state.counters["perturbations"] = static_cast<double>(stats.perturbations);
   }
-  state.counters["output_vertices"] = static_cast<double>(vertexCount(result));
-  oracle::SampleOptions so;
-  so.uniformPoints = 400;
-  // Probing around every vertex costs (vertices x edges): only for small answers.
-  so.nearVertices = vertexCount(w.subject) + vertexCount(w.clip) + vertexCount(result) <= 5000;
-  state.counters["wrong"] = oracle::sampleCheck(w.subject, w.clip, op, result, so).pass() ? 0 : 1;
+  argc = kept;
+  return full;
 }
 
 }  // namespace gh::experiments
