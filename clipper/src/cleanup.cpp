@@ -24,8 +24,6 @@ struct PointHash {
   }
 };
 
-int signOfDifference(double a, double b) { return (a > b) - (a < b); }
-
 // b is the tip of a zero-width spike a -> b -> c: the three are collinear and the path turns
 // back at b (decided exactly: orientation, then the direction along the dominant axis).
 bool isSpike(Point a, Point b, Point c) {

@@ -4,26 +4,11 @@
 #include <cmath>
 #include <limits>
 
-
 #include "orientation.h"
 #include "sos_predicates.h"
 
 namespace gh::detail {
 namespace {
-
-int signOfDifference(double a, double b) { return (a > b) - (a < b); }
-
-// SoS sides from exact orientations (the expansions of sos_predicates.h, with O computed once).
-Sign clipSide(Sign o, Point q1, Point q2) {
-  if (o != Sign::Zero) return o;
-  const int dy = signOfDifference(q2.y, q1.y);
-  return toSign(dy != 0 ? dy : -signOfDifference(q2.x, q1.x));
-}
-Sign subjectSide(Sign o, Point p1, Point p2) {
-  if (o != Sign::Zero) return o;
-  const int ey = signOfDifference(p2.y, p1.y);
-  return toSign(ey != 0 ? -ey : signOfDifference(p2.x, p1.x));
-}
 
 // The parameter along a1a2 of its crossing with line b1b2 in the limit,
 // t = O(b1,b2,a1) / (O(b1,b2,a1) - O(b1,b2,a2)), with a certified bound on its error (infinite
@@ -70,9 +55,9 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
     return {};
   }
   const Sign oP1 = orientation(q1, q2, p1), oP2 = orientation(q1, q2, p2);
-  if (clipSide(oP1, q1, q2) == clipSide(oP2, q1, q2)) return {};
+  if (sos::clipEdgeSide(oP1, q1, q2) == sos::clipEdgeSide(oP2, q1, q2)) return {};
   const Sign oQ1 = orientation(p1, p2, q1), oQ2 = orientation(p1, p2, q2);
-  if (subjectSide(oQ1, p1, p2) == subjectSide(oQ2, p1, p2)) return {};
+  if (sos::subjectEdgeSide(oQ1, p1, p2) == sos::subjectEdgeSide(oQ2, p1, p2)) return {};
 
   PairTest t;
   t.kind = PairTest::Kind::Crossing;

@@ -12,6 +12,9 @@ enum class Sign { Negative = -1, Zero = 0, Positive = 1 };
 
 inline Sign toSign(int s) { return s > 0 ? Sign::Positive : s < 0 ? Sign::Negative : Sign::Zero; }
 
+// Sign of a - b for doubles: exact (a comparison, no subtraction).
+inline int signOfDifference(double a, double b) { return (a > b) - (a < b); }
+
 // Sign of (b - a) x (c - a): Positive when a, b, c turn counter-clockwise.
 Sign orientation(Point a, Point b, Point c);
 

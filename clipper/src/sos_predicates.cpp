@@ -7,8 +7,6 @@
 namespace gh::detail::sos {
 namespace {
 
-int signOfDifference(double a, double b) { return (a > b) - (a < b); }  // exact for doubles
-
 // First non-zero of s0, s1, s2 (the eps expansion).
 int leading(int s0, int s1, int s2) { return s0 != 0 ? s0 : s1 != 0 ? s1 : s2; }
 
@@ -62,21 +60,23 @@ int compare(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2, int bSig
 
 }  // namespace
 
-Sign clipEdgeSide(Point q1, Point q2, Point p) {
-  const Sign o = orientation(q1, q2, p);
+Sign clipEdgeSide(Sign o, Point q1, Point q2) {
   if (o != Sign::Zero) return o;
   const int dy = signOfDifference(q2.y, q1.y);
   if (dy != 0) return toSign(dy);
   return toSign(-signOfDifference(q2.x, q1.x));
 }
 
-Sign subjectEdgeSide(Point p1, Point p2, Point q) {
-  const Sign o = orientation(p1, p2, q);
+Sign subjectEdgeSide(Sign o, Point p1, Point p2) {
   if (o != Sign::Zero) return o;
   const int ey = signOfDifference(p2.y, p1.y);
   if (ey != 0) return toSign(-ey);
   return toSign(signOfDifference(p2.x, p1.x));
 }
+
+Sign clipEdgeSide(Point q1, Point q2, Point p) { return clipEdgeSide(orientation(q1, q2, p), q1, q2); }
+
+Sign subjectEdgeSide(Point p1, Point p2, Point q) { return subjectEdgeSide(orientation(p1, p2, q), p1, p2); }
 
 bool cross(Point p1, Point p2, Point q1, Point q2) {
   if (clipEdgeSide(q1, q2, p1) == clipEdgeSide(q1, q2, p2)) return false;

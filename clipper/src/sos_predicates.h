@@ -16,6 +16,10 @@ Sign clipEdgeSide(Point q1, Point q2, Point p);
 //   O(p1, p2, q) - (p2.y - p1.y) eps + (p2.x - p1.x) eps^2
 Sign subjectEdgeSide(Point p1, Point p2, Point q);
 
+// The same two expansions for a caller that already has the exact O (its eps-free term).
+Sign clipEdgeSide(Sign o, Point q1, Point q2);
+Sign subjectEdgeSide(Sign o, Point p1, Point p2);
+
 // Do subject edge p1p2 and the translated clip edge q1q2 cross? (Never touch: SoS.)
 bool cross(Point p1, Point p2, Point q1, Point q2);
 
