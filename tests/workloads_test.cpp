@@ -46,6 +46,19 @@ TEST(Workloads, SimpleHolesAndRealisticAreValidPolygonsWithHoles) {
   }
 }
 
+// Regressions: inputs the generators got wrong before they were fixed. touching-vertex could draw
+// a triangle with two equal vertices (n 6, seed 84); star rings with an angular gap over pi were
+// not simple (holes n 20 seed 1, n 25 seed 6, n 26 seed 7 were refused by the OGC conversion).
+TEST(Workloads, FixedGeneratorCases) {
+  const auto tv = work::generate("touching-vertex", 6, 84);
+  EXPECT_NO_THROW(normalized(tv.clip));
+  for (const auto& [n, seed] : std::vector<std::pair<std::size_t, std::uint64_t>>{{20, 1}, {25, 6}, {26, 7}}) {
+    const auto w = work::generate("holes", n, seed);
+    EXPECT_FALSE(toPolygonsWithHoles(w.subject).refusal) << "holes n " << n << " seed " << seed;
+    EXPECT_FALSE(toPolygonsWithHoles(w.clip).refusal) << "holes n " << n << " seed " << seed;
+  }
+}
+
 TEST(Workloads, BitsetCellsAreTheirPopcount) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const auto b = work::bitsetGrid(50, seed);
