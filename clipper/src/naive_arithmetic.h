@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "operand.h"
+#include "orientation.h"
 #include "pair_test.h"
 
 namespace gh::detail {
@@ -29,11 +30,12 @@ class NaiveArithmetic {
                 std::uint32_t clipEdge) const;
 
   // Order of two crossings on the same subject (clip) edge: by alpha, as in the paper.
-  bool lessAlongSubject(const Crossing& a, const Crossing& b, const Operand&, const Operand&) const {
-    return a.alphaSubject < b.alphaSubject;
+  // -1: a first, +1: b first, 0: tied.
+  int compareAlongSubject(const Crossing& a, const Crossing& b, const Operand&, const Operand&) const {
+    return signOfDifference(a.alphaSubject, b.alphaSubject);
   }
-  bool lessAlongClip(const Crossing& a, const Crossing& b, const Operand&, const Operand&) const {
-    return a.alphaClip < b.alphaClip;
+  int compareAlongClip(const Crossing& a, const Crossing& b, const Operand&, const Operand&) const {
+    return signOfDifference(a.alphaClip, b.alphaClip);
   }
 
   // Even-odd test of a vertex of one operand against the other operand (phase 2's start).

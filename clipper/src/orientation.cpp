@@ -2,8 +2,6 @@
 
 #include <gmpxx.h>
 
-#include <cmath>
-
 #include "approx.h"
 
 namespace gh::detail {
@@ -29,18 +27,7 @@ Sign decide(Point a, Point b, Point c, Point d) {
 
 }  // namespace
 
-Sign orientation(Point a, Point b, Point c) {
-  // Stage A of Shewchuk's orient2d: a plain double evaluation decides almost every call;
-  // |error| <= (3 + 16 eps) eps (|left| + |right|) while nothing under- or overflows.
-  constexpr double kBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
-  const double left = (b.x - a.x) * (c.y - a.y), right = (b.y - a.y) * (c.x - a.x);
-  const double det = left - right, sum = std::abs(left) + std::abs(right);
-  if (sum > 0x1p-900 && sum < 0x1p900) {
-    if (det > kBound * sum) return Sign::Positive;
-    if (-det > kBound * sum) return Sign::Negative;
-  }
-  return decide(a, b, a, c);
-}
+Sign orientationExact(Point a, Point b, Point c) { return decide(a, b, a, c); }
 
 Sign crossSign(Point a, Point b, Point c, Point d) { return decide(a, b, c, d); }
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "construction.h"
 #include "crossing.h"
 #include "ghclip/errors.h"
 #include "ghclip/stats.h"
@@ -42,7 +43,7 @@ template <class Search, class Arithmetic>
 Phase1Result findIntersections(Operand subject, Operand clip, const Search& search,
                                const Arithmetic& arithmetic, Stats& stats) {
   Phase1Result r{std::move(subject), std::move(clip), {}, {}, {}, {}, {}};
-  const std::uint64_t fallbacksBefore = exactFallbacks();
+  const std::uint64_t fallbacksBefore = exactFallbacks(), constructionsBefore = exactConstructions();
   for (int round = 0;; ++round) {
     r.crossings.clear();
     std::vector<std::uint32_t> degenerateSubject, degenerateClip;
@@ -81,14 +82,14 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
   for (std::uint32_t i = 0; i < cs.size(); ++i) r.subjectOrder[i] = r.clipOrder[i] = i;
   std::sort(r.subjectOrder.begin(), r.subjectOrder.end(), [&](std::uint32_t a, std::uint32_t b) {
     if (cs[a].subjectEdge != cs[b].subjectEdge) return cs[a].subjectEdge < cs[b].subjectEdge;
-    if (arithmetic.lessAlongSubject(cs[a], cs[b], r.subject, r.clip)) return true;
-    if (arithmetic.lessAlongSubject(cs[b], cs[a], r.subject, r.clip)) return false;
+    if (a == b) return false;
+    if (const int c = arithmetic.compareAlongSubject(cs[a], cs[b], r.subject, r.clip)) return c < 0;
     return cs[a].clipEdge < cs[b].clipEdge;
   });
   std::sort(r.clipOrder.begin(), r.clipOrder.end(), [&](std::uint32_t a, std::uint32_t b) {
     if (cs[a].clipEdge != cs[b].clipEdge) return cs[a].clipEdge < cs[b].clipEdge;
-    if (arithmetic.lessAlongClip(cs[a], cs[b], r.subject, r.clip)) return true;
-    if (arithmetic.lessAlongClip(cs[b], cs[a], r.subject, r.clip)) return false;
+    if (a == b) return false;
+    if (const int c = arithmetic.compareAlongClip(cs[a], cs[b], r.subject, r.clip)) return c < 0;
     return cs[a].subjectEdge < cs[b].subjectEdge;
   });
 
@@ -102,6 +103,7 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
     r.clipRingInside[k] = arithmetic.clipVertexInsideSubject(r.clip, r.clip.ringStart[k], r.subject);
   }
   stats.filterFailures = exactFallbacks() - fallbacksBefore;
+  stats.exactConstructions = exactConstructions() - constructionsBefore;
   return r;
 }
 

@@ -13,6 +13,7 @@ struct Stats {
   std::uint64_t perturbations = 0;    // vertices moved (naive/sweep) to break degeneracies
   std::uint64_t perturbationRounds = 0;  // phase-1 restarts after perturbing
   std::uint64_t filterFailures = 0;   // exact predicates that needed the exact fallback
+  std::uint64_t exactConstructions = 0;  // crossing points the exact variant rounded from rationals
   std::uint64_t outputRings = 0;
   std::uint64_t outputVertices = 0;
   double phase1Seconds = 0;  // intersections (including perturbation rounds)

@@ -1,0 +1,89 @@
+// The exact variant's only constructed points: every coordinate of a crossing must be a faithful
+// rounding of the exact one (strictly within one ulp), at every magnitude, subnormal and huge
+// included, and for nearly parallel segments.
+#include <gtest/gtest.h>
+#include <gmpxx.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "construction.h"
+
+namespace gh {
+namespace {
+
+using detail::constructCrossing;
+
+mpq_class q(double v) { return mpq_class(v); }
+
+mpq_class orient(Point a, Point b, Point c) {
+  return (q(b.x) - q(a.x)) * (q(c.y) - q(a.y)) - (q(b.y) - q(a.y)) * (q(c.x) - q(a.x));
+}
+
+// Do the segments cross at one point interior to both? (Exact.)
+bool properlyCross(Point p1, Point p2, Point q1, Point q2) {
+  return sgn(orient(q1, q2, p1)) * sgn(orient(q1, q2, p2)) < 0 && sgn(orient(p1, p2, q1)) * sgn(orient(p1, p2, q2)) < 0;
+}
+
+// Is d one of the two doubles that bracket the exact value v (or v itself)?
+bool faithful(double d, const mpq_class& v) {
+  const double inf = std::numeric_limits<double>::infinity();
+  return q(std::nextafter(d, -inf)) < v && v < q(std::nextafter(d, inf));
+}
+
+// Checks constructCrossing against the exact rational crossing; "" when faithful.
+std::string check(Point p1, Point p2, Point q1, Point q2) {
+  const mpq_class w1 = orient(q1, q2, p1), w2 = orient(q1, q2, p2);
+  const mpq_class t = w1 / (w1 - w2);
+  const mpq_class x = q(p1.x) + t * (q(p2.x) - q(p1.x)), y = q(p1.y) + t * (q(p2.y) - q(p1.y));
+  const Point c = constructCrossing(p1, p2, q1, q2);
+  if (!faithful(c.x, x)) return "x " + std::to_string(c.x) + " is not a faithful rounding";
+  if (!faithful(c.y, y)) return "y " + std::to_string(c.y) + " is not a faithful rounding";
+  return "";
+}
+
+// Small integers times 2^e: every magnitude from the subnormal range to near overflow.
+rc::Gen<double> scaledInteger(int e) {
+  return rc::gen::map(rc::gen::inRange(-(1 << 20), 1 << 20), [e](int m) { return std::ldexp(m, e); });
+}
+
+RC_GTEST_PROP(Construction, CrossingsAreFaithfullyRoundedAtEveryMagnitude, ()) {
+  const int e = *rc::gen::inRange(-1074, 980);
+  const auto coord = scaledInteger(e);
+  const Point p1{*coord, *coord}, p2{*coord, *coord}, q1{*coord, *coord}, q2{*coord, *coord};
+  RC_PRE(properlyCross(p1, p2, q1, q2));
+  const std::string problem = check(p1, p2, q1, q2);
+  RC_ASSERT(problem == "");
+}
+
+// Random doubles: the fast path decides these; nearly parallel pairs stress its bound.
+RC_GTEST_PROP(Construction, CrossingsOfNearlyParallelSegmentsAreFaithfullyRounded, ()) {
+  const auto unit = rc::gen::map(rc::gen::inRange(0, 1 << 30), [](int m) { return std::ldexp(m, -30); });
+  const Point p1{*unit, *unit}, p2{*unit, *unit};
+  // q runs along p, tilted by a tiny angle about a point of p.
+  const double s = *unit, tilt = std::ldexp(1.0, -*rc::gen::inRange(1, 50));
+  const Point m{p1.x + s * (p2.x - p1.x), p1.y + s * (p2.y - p1.y)};
+  const double dx = p2.x - p1.x, dy = p2.y - p1.y;
+  const Point q1{m.x - dx - tilt * dy, m.y - dy + tilt * dx}, q2{m.x + dx + tilt * dy, m.y + dy - tilt * dx};
+  RC_PRE(properlyCross(p1, p2, q1, q2));
+  const std::string problem = check(p1, p2, q1, q2);
+  RC_ASSERT(problem == "");
+}
+
+TEST(Construction, SubnormalCrossingIsExact) {
+  const double u = std::numeric_limits<double>::denorm_min();
+  // (4u, 2u)-(12u, 4u) crosses x = 8u at y = 3u exactly.
+  const Point c = constructCrossing({4 * u, 2 * u}, {12 * u, 4 * u}, {8 * u, 0}, {8 * u, 8 * u});
+  EXPECT_EQ(c.x, 8 * u);
+  EXPECT_EQ(c.y, 3 * u);
+}
+
+TEST(Construction, AxisParallelSegmentsGiveExactCoordinates) {
+  const Point c = constructCrossing({0.1, 0.3}, {0.7, 0.3}, {0.2, 0.9}, {0.2, -0.4});
+  EXPECT_EQ(c.x, 0.2);
+  EXPECT_EQ(c.y, 0.3);
+}
+
+}  // namespace
+}  // namespace gh
