@@ -9,12 +9,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
 
 #include "ghclip/validate.h"
 #include "ghoracle/tolerance.h"
+#include "judging_scale.h"
 
 namespace gh::oracle {
 namespace {
@@ -208,16 +211,49 @@ std::string rationalText(const EFT& v) {
 
 }  // namespace
 
-double ExactVerdict::relativeError() const {
-  double scale = std::max({subjectArea, clipArea, expectedArea, resultArea});
+namespace {
+
+// errorArea relative to the problem's size (see exact_oracle.h); scale-free, so it is computed
+// on the scaled problem, where no area underflows.
+double relativeErrorOf(const ExactVerdict& v) {
+  double scale = std::max({v.subjectArea, v.clipArea, v.expectedArea, v.resultArea});
   // Operands of zero area (collinear rings) leave no area to compare with: then the size of the
   // problem is its bounding box.
-  if (scale <= boxArea * 0x1p-40) scale = boxArea;
-  return scale > 0 ? errorArea / scale : (errorArea > 0 ? 1.0 : 0.0);
+  if (scale <= v.boxArea * 0x1p-40) scale = v.boxArea;
+  return scale > 0 ? v.errorArea / scale : (v.errorArea > 0 ? 1.0 : 0.0);
 }
 
-ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const Region& result,
-                        const ExactOptions& options) {
+// The tolerance for the exact answer's own constructed vertices: each end of a boundary edge of
+// op(S, C) that is not an input vertex may move by `displacement` when rounded.
+double answerTolerance(const Arrangement& arr, Op op, const Region& subject, const Region& clip, double displacement) {
+  std::set<std::pair<double, double>> inputVertices;
+  for (const Region* r : {&subject, &clip}) {
+    for (const Ring& ring : *r) {
+      for (const Point& p : ring) inputVertices.insert({p.x, p.y});
+    }
+  }
+  auto constructed = [&](Arrangement::Vertex_const_handle v) {
+    const auto& a = CGAL::approx(v->point());
+    if (!a.x().is_point() || !a.y().is_point()) return true;
+    return !inputVertices.count({a.x().inf(), a.y().inf()});
+  };
+  double tolerance = 0;
+  for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+    if (expectedInside(op, e->face()->data()) == expectedInside(op, e->twin()->face()->data())) continue;
+    const int ends = constructed(e->source()) + constructed(e->target());
+    if (ends == 0) continue;
+    const auto& a = CGAL::approx(e->source()->point());
+    const auto& b = CGAL::approx(e->target()->point());
+    const double length = std::hypot(CGAL::to_double(b.x() - a.x()), CGAL::to_double(b.y() - a.y()));
+    tolerance += displacement * length / 2 * ends;
+  }
+  return tolerance;
+}
+
+// The judgement proper, on a problem already at a comfortable scale: coordinates were multiplied
+// by 2^k (areas by 4^k) and `displacement` is the original's, scaled alike.
+ExactVerdict judge(const Region& subject, const Region& clip, Op op, const Region& result,
+                   const ExactOptions& options, double displacement, int k) {
   const auto start = std::chrono::steady_clock::now();
   Arrangement arr;
   build(subject, clip, result, arr);
@@ -263,7 +299,8 @@ ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const 
   v.boxArea = (maxX / 2 - minX / 2) * (maxY / 2 - minY / 2) * 4;
   v.areaUncertainty = std::max(expected.sup() - expected.inf(), got.sup() - got.inf());
   v.errorArea = CGAL::to_double(error);
-  v.tolerance = roundingTolerance(subject, clip, result);
+  v.tolerance = roundingTolerance(subject, clip, result, displacement) +
+                answerTolerance(arr, op, subject, clip, displacement);
   // The verdict is certified: by the interval when it lies on one side of the tolerance,
   // else by the exact sum.
   const bool undecided = error.inf() <= v.tolerance && v.tolerance < error.sup();
@@ -271,7 +308,10 @@ ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const 
     EFT exact = 0;
     for (Face f : wrongFaces) exact += faceArea(f);
     v.errorArea = CGAL::to_double(exact);
-    v.errorAreaExact = rationalText(exact);
+    EFT original = exact;
+    const EFT factor = k > 0 ? EFT(0.5) : EFT(2);
+    for (int i = 0; i < 2 * std::abs(k); ++i) original *= factor;
+    v.errorAreaExact = rationalText(original);
     v.pass = exact <= EFT(v.tolerance);
   } else {
     v.pass = error.sup() <= v.tolerance;
@@ -291,7 +331,31 @@ ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const 
   v.faces = arr.number_of_faces();
   v.vertices = arr.number_of_vertices();
   v.edges = arr.number_of_edges();
+  v.relative = relativeErrorOf(v);
   v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return v;
+}
+
+}  // namespace
+
+double ExactVerdict::relativeError() const { return relative; }
+
+ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const Region& result,
+                        const ExactOptions& options) {
+  const double displacement = constructionDisplacement(subject, clip, result);
+  const int k = judgingExponent(subject, clip, result);
+  if (k == 0) return judge(subject, clip, op, result, options, displacement, 0);
+  ExactVerdict v = judge(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), options,
+                         std::ldexp(displacement, k), k);
+  // Back to the original scale (areas may underflow to 0 or overflow there; the relative error
+  // and the verdict were decided at the comfortable scale).
+  for (double* area : {&v.expectedArea, &v.resultArea, &v.subjectArea, &v.clipArea, &v.boxArea,
+                       &v.areaUncertainty, &v.errorArea, &v.tolerance}) {
+    *area = std::ldexp(*area, -2 * k);
+  }
+  if (v.witness) v.witness = scaledBy(*v.witness, -k);
+  v.expected = scaledBy(v.expected, -k);
+  v.wrong = scaledBy(v.wrong, -k);
   return v;
 }
 

@@ -2,12 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "ghclip/measure.h"
 #include "ghoracle/tolerance.h"
+#include "judging_scale.h"
 
 namespace gh::oracle {
+namespace {
+
+// A bound on the error of evenOddArea over these regions: every edge contributes to at most each
+// slab of the x-extent W, with heights up to the largest |y| computed in a few roundings, and
+// every operation may lose a denormal's worth below the normal range.
+double measurementError(const Region& a, const Region& b, const Region& c) {
+  double minX = 0, maxX = 0, maxY = 0, edges = 0;
+  bool any = false;
+  for (const Region* r : {&a, &b, &c}) {
+    for (const Ring& ring : *r) {
+      edges += static_cast<double>(ring.size());
+      for (const Point& p : ring) {
+        if (!any) minX = maxX = p.x, any = true;
+        minX = std::min(minX, p.x), maxX = std::max(maxX, p.x), maxY = std::max(maxY, std::abs(p.y));
+      }
+    }
+  }
+  return 16 * 0x1p-53 * edges * (maxX - minX) * maxY + 16 * edges * edges * std::numeric_limits<double>::denorm_min();
+}
+
+}  // namespace
 
 std::vector<std::string> invariantViolations(const Region& subject, const Region& clip, Op op,
                                              const Region& result) {
@@ -24,10 +47,21 @@ std::vector<std::string> invariantViolations(const Region& subject, const Region
       }
     }
   }
-  const double a = evenOddArea(subject), b = evenOddArea(clip), r = evenOddArea(result);
-  // Slack: the rounding tolerance plus a relative 1e-9 of the areas involved for the
-  // floating-point area measurement itself.
-  const double slack = roundingTolerance(subject, clip, result) + 1e-9 * (a + b + r);
+  // Areas are measured on a copy at a comfortable scale (judging_scale.h): at subnormal or
+  // 1e300 magnitudes the floating-point measurement itself would under- or overflow.
+  const int k = judgingExponent(subject, clip, result);
+  const Region s = k ? scaledBy(subject, k) : Region{}, c = k ? scaledBy(clip, k) : Region{},
+               rs = k ? scaledBy(result, k) : Region{};
+  const Region& S = k ? s : subject;
+  const Region& C = k ? c : clip;
+  const Region& R = k ? rs : result;
+  const double a = evenOddArea(S), b = evenOddArea(C), r = evenOddArea(R);
+  // Slack: the rounding tolerance (with the original's resolution), the measurement's own error
+  // (each slab trapezoid is measured with a few roundings of heights up to the largest |y|, and
+  // results below the normal range lose absolute precision), and a relative 1e-9 of the areas.
+  const double tolerance =
+      roundingTolerance(S, C, R, std::ldexp(constructionDisplacement(subject, clip, result), k));
+  const double slack = tolerance + measurementError(S, C, R) + 1e-9 * (a + b + r);
   auto require = [&](bool ok, const char* what) {
     if (ok) return;
     std::ostringstream s;

@@ -6,6 +6,9 @@
 #include <limits>
 #include <random>
 
+#include "ghoracle/tolerance.h"
+#include "judging_scale.h"
+
 namespace gh::oracle {
 namespace {
 
@@ -57,10 +60,10 @@ Probe probe(const Region& region, Point p, double delta) {
   return out;
 }
 
-}  // namespace
-
-SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, const Region& result,
-                          const SampleOptions& options) {
+// The check proper, on a problem at a comfortable scale (judging_scale.h); minDelta is the
+// original problem's rounding resolution at this scale.
+SampleVerdict sample(const Region& subject, const Region& clip, Op op, const Region& result,
+                     const SampleOptions& options, double minDelta) {
   const auto start = std::chrono::steady_clock::now();
   SampleVerdict v;
   Box box;
@@ -72,7 +75,7 @@ SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, cons
   // Rounding in the crossing tests scales with the coordinates' magnitude, not only the extent:
   // far from the origin (1e9 + a unit square) the second term dominates.
   const double magnitude = std::max({std::abs(box.minX), std::abs(box.maxX), std::abs(box.minY), std::abs(box.maxY)});
-  v.delta = std::ldexp(extent, -32) + std::ldexp(magnitude, -44);
+  v.delta = std::max(std::ldexp(extent, -32) + std::ldexp(magnitude, -44), minDelta);
 
   auto check = [&](Point p) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
@@ -111,6 +114,21 @@ SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, cons
     }
   }
   v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return v;
+}
+
+}  // namespace
+
+SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, const Region& result,
+                          const SampleOptions& options) {
+  const int k = judgingExponent(subject, clip, result);
+  if (k == 0) return sample(subject, clip, op, result, options, 0);
+  // Scaled from subnormal coordinates, the rounding grid of the original becomes coarse: a point
+  // closer to an edge than a correct answer's rounding may move it is not judged.
+  const double resolution = std::ldexp(constructionDisplacement(subject, clip, result), k);
+  SampleVerdict v = sample(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), options, resolution);
+  v.delta = std::ldexp(v.delta, -k);
+  if (v.firstMismatch) v.firstMismatch = scaledBy(*v.firstMismatch, -k);
   return v;
 }
 

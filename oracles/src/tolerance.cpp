@@ -21,21 +21,21 @@ double ulpOf(double m) {
 
 }  // namespace
 
-double roundingTolerance(const Region& subject, const Region& clip, const Region& result) {
-  std::unordered_set<Point, PointHash> inputVertices;
+double constructionDisplacement(const Region& subject, const Region& clip, const Region& result) {
   double m = 0;
-  for (const Region* r : {&subject, &clip}) {
+  for (const Region* r : {&subject, &clip, &result}) {
     for (const Ring& ring : *r) {
-      for (const Point& p : ring) {
-        inputVertices.insert(p);
-        m = std::max({m, std::abs(p.x), std::abs(p.y)});
-      }
+      for (const Point& p : ring) m = std::max({m, std::abs(p.x), std::abs(p.y)});
     }
   }
-  for (const Ring& ring : result) {
-    for (const Point& p : ring) m = std::max({m, std::abs(p.x), std::abs(p.y)});
+  return kConstructionUlps * ulpOf(m) * std::sqrt(2.0);
+}
+
+double roundingTolerance(const Region& subject, const Region& clip, const Region& result, double displacement) {
+  std::unordered_set<Point, PointHash> inputVertices;
+  for (const Region* r : {&subject, &clip}) {
+    for (const Ring& ring : *r) inputVertices.insert(ring.begin(), ring.end());
   }
-  const double displacement = kConstructionUlps * ulpOf(m) * std::sqrt(2.0);
   double tolerance = 0;
   for (const Ring& ring : result) {
     const std::size_t n = ring.size();
@@ -49,6 +49,10 @@ double roundingTolerance(const Region& subject, const Region& clip, const Region
     }
   }
   return tolerance;
+}
+
+double roundingTolerance(const Region& subject, const Region& clip, const Region& result) {
+  return roundingTolerance(subject, clip, result, constructionDisplacement(subject, clip, result));
 }
 
 }  // namespace gh::oracle

@@ -34,6 +34,7 @@ struct ExactVerdict {
   std::size_t faces = 0, vertices = 0, edges = 0;
   double seconds = 0;
 
+  double relative = 0;         // see relativeError()
   // errorArea relative to the largest of the operands', expected and result areas (a scale that
   // stays meaningful when the expected answer is empty), or to the bounding box of S and C when
   // all of those vanish (operands of zero area).
