@@ -1,0 +1,414 @@
+// The robustness study: every variant and every peer, input class by input class, every
+// operation, each answer judged by the exact oracle. Each case runs in a child process
+// (common/isolated_run.h), so a crash or a hang of any method is counted, not fatal.
+// Writes OUT_DIR/robustness.md, OUT_DIR/robustness.svg (heat map, via gnuplot),
+// OUT_DIR/robustness.json (every count) and, for every failing cell, its smallest failing case in
+// OUT_DIR/counterexamples/<method>/robustness-<class>-<op>.{wkt,svg}.
+//   robustness OUT_DIR [--cases N] [--full] [--timeout SECONDS]
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "common/isolated_run.h"
+#include "common/provenance.h"
+#include "ghclip/measure.h"
+#include "ghio/formats.h"
+#include "ghio/svg.h"
+#include "ghoracle/exact_oracle.h"
+#include "ghwork/generators.h"
+#include "tool_main.h"
+
+namespace fs = std::filesystem;
+using namespace gh;
+using namespace gh::experiments;
+
+namespace {
+
+struct InputClass {
+  std::string name;      // also the workload given to work::generate
+  std::size_t minN, maxN;
+  bool valid;            // valid polygons with holes, so GEOS, Boost.Geometry and CGAL run too
+  std::string description;
+};
+
+const InputClass kClasses[] = {
+    {"random", 4, 20, false, "the paper's random n-gons in the unit square (self-intersecting)"},
+    {"simple", 5, 30, true, "random simple polygons (star-shaped or 2-opt)"},
+    {"holes", 20, 60, true, "a square shell with 2-5 star holes against another"},
+    {"circles", 32, 96, true, "two perturbed circles crossing twice"},
+    {"grid", 3, 12, false, "random n-gons on the integer grid 0..8: vertices on edges, overlapping edges"},
+    {"identical", 3, 10, true, "the same grid polygon twice"},
+    {"shared-edge", 4, 4, true, "two rectangles whose edges partly overlap"},
+    {"touching-vertex", 4, 4, true, "a rectangle and a triangle meeting at one corner"},
+    {"nested-touching", 4, 4, true, "C inside S, sharing part of an edge and touching at a vertex"},
+    {"sliver", 4, 4, true, "rectangles overlapping in a strip of width 2^-20"},
+    {"sub-boundary", 3, 8, true, "C's vertices are every other vertex of S"},
+    {"bitset-grid", 18, 50, true, "unions of unit cells of two random bitsets (edges shared everywhere)"},
+    {"grid+ulp", 3, 12, false, "the grid class with every coordinate moved by one ulp: near-degenerate"},
+    {"identical+ulp", 3, 10, true, "two copies of a polygon, each coordinate moved by one ulp independently"},
+    {"simple+tiny", 5, 30, true, "the simple class scaled by 2^-997 (coordinates near 1e-300)"},
+    {"grid+tiny", 3, 12, false, "the grid class scaled by 2^-997"},
+    {"simple+huge", 5, 30, true, "the simple class scaled to coordinates near 2^497 (1e150)"},
+    {"grid+huge", 3, 12, false, "the grid class scaled to coordinates near 2^497"},
+    {"simple+far", 5, 30, true, "the simple class moved by (1e9, 1e9)"},
+    {"grid+far", 3, 12, false, "the grid class moved by (1e9, 1e9)"},
+};
+
+enum class Verdict { Exact, Rounding, Beyond, Gross, Refused, Threw, Crashed, TimedOut };
+constexpr Verdict kVerdicts[] = {Verdict::Exact,   Verdict::Rounding, Verdict::Beyond,  Verdict::Gross,
+                                 Verdict::Refused, Verdict::Threw,    Verdict::Crashed, Verdict::TimedOut};
+const char* key(Verdict v) {
+  switch (v) {
+    case Verdict::Exact: return "exact";
+    case Verdict::Rounding: return "rounding";
+    case Verdict::Beyond: return "beyond-rounding";
+    case Verdict::Gross: return "gross";
+    case Verdict::Refused: return "refused";
+    case Verdict::Threw: return "threw";
+    case Verdict::Crashed: return "crashed";
+    case Verdict::TimedOut: return "timed-out";
+  }
+  return "?";
+}
+// One letter per failure kind in the tables.
+const char* letter(Verdict v) {
+  switch (v) {
+    case Verdict::Beyond: return "b";
+    case Verdict::Gross: return "g";
+    case Verdict::Refused: return "r";
+    case Verdict::Threw: return "t";
+    case Verdict::Crashed: return "c";
+    case Verdict::TimedOut: return "h";
+    default: return "";
+  }
+}
+bool failing(Verdict v) { return v != Verdict::Exact && v != Verdict::Rounding && v != Verdict::Refused; }
+
+struct Case {
+  Region subject, clip, result;
+  int seed = 0;
+  std::size_t size = 0;
+  double relative = 0;
+  std::string message;
+  Verdict verdict = Verdict::Exact;
+};
+
+struct Cell {
+  std::map<Verdict, int> counts;
+  int total = 0;
+  double worstRelative = 0;  // over answers judged beyond rounding or gross
+  bool hasFailure = false;
+  Case smallest;  // the smallest failing case (then the larger error)
+  int correct() const {
+    auto get = [&](Verdict v) { auto it = counts.find(v); return it == counts.end() ? 0 : it->second; };
+    return get(Verdict::Exact) + get(Verdict::Rounding);
+  }
+  int count(Verdict v) const { auto it = counts.find(v); return it == counts.end() ? 0 : it->second; }
+};
+
+std::string fmt(double v, int precision = 2) {
+  std::ostringstream s;
+  s << std::setprecision(precision) << v;
+  return s.str();
+}
+
+std::string percent(int part, int whole) {
+  if (whole == 0) return "–";
+  if (part == whole) return "100%";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << 100.0 * part / whole << "%";
+  return s.str();
+}
+
+Verdict judgeAnswer(const Region& s, const Region& c, Op op, const Region& r, double& relative, std::string& message) {
+  try {
+    const auto v = oracle::exactCheck(s, c, op, r, {false, false, true});
+    relative = v.relativeError();
+    if (v.errorAreaExact == "0") return Verdict::Exact;
+    if (v.pass) return Verdict::Rounding;
+    return relative > 1e-6 ? Verdict::Gross : Verdict::Beyond;
+  } catch (const std::exception& e) {
+    // An answer the oracle cannot even read (non-finite coordinates) is as wrong as it gets.
+    relative = std::numeric_limits<double>::infinity();
+    message = std::string("unreadable answer: ") + e.what();
+    return Verdict::Gross;
+  }
+}
+
+std::string cellText(const Cell& cell) {
+  if (cell.total == 0) return "n/a";
+  std::string text = percent(cell.correct(), cell.total);
+  std::string marks;
+  for (Verdict v : kVerdicts) {
+    if (const int k = cell.count(v); k > 0 && *letter(v)) marks += " " + std::string(letter(v)) + std::to_string(k);
+  }
+  if (!marks.empty()) text += marks;
+  if (cell.worstRelative > 0) text += " · " + fmt(cell.worstRelative);
+  return text;
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  CLI::App app{"The robustness study: every method x input class x operation, judged by the exact oracle."};
+  std::string outDir;
+  int cases = 0;
+  bool full = false;
+  double timeout = 20;
+  app.add_option("OUT_DIR", outDir, "directory for robustness.md/.svg/.json and counterexamples/")->required();
+  app.add_option("--cases", cases, "cases per class (default 12, 100 with --full)")->check(CLI::PositiveNumber);
+  app.add_flag("--full", full, "the large study");
+  app.add_option("--timeout", timeout, "seconds before a case is killed")->check(CLI::PositiveNumber);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return tools::usageError("robustness", e.what());
+  }
+  if (cases == 0) cases = full ? 100 : 12;
+  const fs::path out = outDir;
+  const std::vector<Method> methods = allMethods();
+  IsolationLimits limits;
+  limits.seconds = timeout;
+
+  // cells[op][class][method]
+  std::map<Op, std::map<std::string, std::map<std::string, Cell>>> cells;
+  const auto start = std::chrono::steady_clock::now();
+  for (const InputClass& k : kClasses) {
+    for (int i = 1; i <= cases; ++i) {
+      const std::size_t n = k.minN + static_cast<std::size_t>(i) % (k.maxN - k.minN + 1);
+      const work::Workload w = work::generate(k.name, n, static_cast<std::uint64_t>(i));
+      const std::size_t size = vertexCount(w.subject) + vertexCount(w.clip);
+      for (Op op : kAllOps) {
+        for (const Method& m : methods) {
+          if (m.validInputOnly && !k.valid) continue;
+          Cell& cell = cells[op][k.name][m.name];
+          Case c;
+          c.seed = i;
+          c.size = size;
+          const IsolatedRun r = runIsolated(m, w.subject, w.clip, op, limits);
+          switch (r.status) {
+            case IsolatedRun::Status::Answered:
+              c.verdict = judgeAnswer(w.subject, w.clip, op, r.result, c.relative, c.message);
+              break;
+            case IsolatedRun::Status::Refused: c.verdict = Verdict::Refused; break;
+            case IsolatedRun::Status::Threw: c.verdict = Verdict::Threw; break;
+            case IsolatedRun::Status::Crashed: c.verdict = Verdict::Crashed; break;
+            case IsolatedRun::Status::TimedOut: c.verdict = Verdict::TimedOut; break;
+          }
+          if (c.message.empty()) c.message = r.message;
+          ++cell.total;
+          ++cell.counts[c.verdict];
+          if (c.verdict == Verdict::Beyond || c.verdict == Verdict::Gross) {
+            cell.worstRelative = std::max(cell.worstRelative, c.relative);
+          }
+          if (failing(c.verdict) &&
+              (!cell.hasFailure || size < cell.smallest.size ||
+               (size == cell.smallest.size && c.relative > cell.smallest.relative))) {
+            c.subject = w.subject, c.clip = w.clip, c.result = r.result;
+            cell.smallest = std::move(c);
+            cell.hasFailure = true;
+          }
+        }
+      }
+    }
+    std::cerr << "[robustness] " << k.name << " done ("
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)\n";
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // Counterexamples: the smallest failing case of every failing cell, with the wrong faces.
+  std::map<std::string, std::map<std::string, std::vector<std::string>>> failingCells;  // method -> verdict kind
+  for (Op op : kAllOps) {
+    for (const InputClass& k : kClasses) {
+      for (const Method& m : methods) {
+        const auto it = cells[op][k.name].find(m.name);
+        if (it == cells[op][k.name].end() || !it->second.hasFailure) continue;
+        const Case& f = it->second.smallest;
+        const std::string id = "robustness-" + k.name + "-" + std::string(name(op));
+        const fs::path dir = out / "counterexamples" / m.name;
+        fs::create_directories(dir);
+        std::ostringstream wkt;
+        wkt << "# " << k.name << " seed " << f.seed << ", " << name(op) << " by " << m.name << ": " << key(f.verdict);
+        if (!f.message.empty()) wkt << " (" << f.message << ")";
+        if (f.verdict == Verdict::Beyond || f.verdict == Verdict::Gross) wkt << ", relative error area " << fmt(f.relative, 3);
+        wkt << "\n# subject\n" << io::writeWkt(f.subject) << "\n# clip\n" << io::writeWkt(f.clip) << "\n";
+        if (!f.result.empty() || f.verdict == Verdict::Beyond || f.verdict == Verdict::Gross) {
+          wkt << "# result\n" << io::writeWkt(f.result) << "\n";
+        }
+        io::writeText((dir / (id + ".wkt")).string(), wkt.str());
+        std::vector<io::SvgLayer> layers{{&f.subject, "#c6dbef", "#2171b5", "subject"},
+                                         {&f.clip, "#fcbba1", "#cb181d", "clip"}};
+        oracle::ExactVerdict v;
+        std::vector<io::SvgMarker> marks;
+        if (f.verdict == Verdict::Beyond || f.verdict == Verdict::Gross) {
+          try {
+            v = oracle::exactCheck(f.subject, f.clip, op, f.result);
+            layers.push_back({&f.result, "#a1d99b", "#145214", m.name + " result"});
+            layers.push_back({&v.wrong, "#ff0000", "#ff0000", "wrong faces (exact oracle)", 0.9});
+            if (v.witness) marks.push_back({*v.witness, "#d00000", "witness"});
+          } catch (const std::exception&) {
+            // unreadable answer: the picture shows the operands only
+          }
+        }
+        io::writeText((dir / (id + ".svg")).string(),
+                      io::svgPicture(layers, m.name + ": " + id + " (" + key(f.verdict) + ")", marks));
+        failingCells[m.name][key(f.verdict)].push_back(k.name + " " + std::string(name(op)));
+      }
+    }
+  }
+
+  // The heat map: share of correct answers (exact or rounding-level) over all operations.
+  std::ostringstream data;
+  for (std::size_t row = 0; row < std::size(kClasses); ++row) {
+    for (std::size_t col = 0; col < methods.size(); ++col) {
+      int correct = 0, total = 0;
+      for (Op op : kAllOps) {
+        const auto& byMethod = cells[op][kClasses[row].name];
+        const auto it = byMethod.find(methods[col].name);
+        if (it == byMethod.end()) continue;
+        correct += it->second.correct(), total += it->second.total;
+      }
+      const double share = total ? 100.0 * correct / total : std::nan("");
+      data << col << ' ' << row << ' ' << (total ? fmt(share, 4) : "NaN") << " \""
+           << (total ? fmt(std::floor(share), 3) : "n/a") << "\"\n";
+    }
+    data << "\n";
+  }
+  const std::string plotBase = (out / "robustness").string();
+  io::writeText(plotBase + ".dat", data.str());
+  std::ostringstream gp;
+  gp << "set terminal svg size " << 160 + 110 * methods.size() << "," << 140 + 28 * std::size(kClasses)
+     << " font 'sans,12' background '#ffffff'\n"
+     << "set output '" << plotBase << ".svg'\n"
+     << "set title 'Correct answers (exact or rounding-level), % of cases, all five operations'\n"
+     << "set xrange [-0.5:" << methods.size() - 0.5 << "]\nset yrange [" << std::size(kClasses) - 0.5 << ":-0.5]\n"
+     << "set palette defined (0 '#b2182b', 50 '#f4a582', 90 '#fddbc7', 99 '#d1e5f0', 100 '#2166ac')\n"
+     << "set cbrange [0:100]\nset cblabel 'correct %'\nset xtics (";
+  for (std::size_t col = 0; col < methods.size(); ++col) gp << (col ? ", " : "") << "'" << methods[col].name << "' " << col;
+  gp << ") scale 0\nset ytics (";
+  for (std::size_t row = 0; row < std::size(kClasses); ++row) gp << (row ? ", " : "") << "'" << kClasses[row].name << "' " << row;
+  gp << ") scale 0\nunset key\nset datafile missing 'NaN'\n"
+     << "plot '" << plotBase << ".dat' using 1:2:(0.5):(0.5):3 with boxxyerror fc palette fs solid 1.0 noborder, "
+     << "'' using 1:2:4 with labels font 'sans,10'\n";
+  io::writeText(plotBase + ".gp", gp.str());
+  if (std::system(("gnuplot '" + plotBase + ".gp'").c_str()) != 0) throw std::runtime_error("gnuplot failed");
+  fs::remove(plotBase + ".gp");
+  fs::remove(plotBase + ".dat");
+
+  // JSON: every count, for anyone who wants to plot it differently.
+  nlohmann::json json;
+  json["cases_per_class"] = cases;
+  json["seconds"] = seconds;
+  for (Op op : kAllOps) {
+    for (const InputClass& k : kClasses) {
+      for (const auto& [method, cell] : cells[op][k.name]) {
+        nlohmann::json& j = json["cells"][std::string(name(op))][k.name][method];
+        for (Verdict v : kVerdicts) j[key(v)] = cell.count(v);
+        j["worst_relative_error"] = cell.worstRelative;
+      }
+    }
+  }
+  io::writeText(plotBase + ".json", json.dump(1) + "\n");
+
+  // The report.
+  std::ostringstream md;
+  md << "# Robustness: which clipper is right on which inputs\n\n"
+     << markdown(provenance(argc, argv)) << "\n"
+     << cases << " seeded cases per input class (seeds 1.." << cases << "), each with all five operations, "
+     << "each method run in its own child process (killed after " << timeout << " s, 8 GiB address space); "
+     << "every answer judged by the exact CGAL-arrangement oracle. The study took " << fmt(seconds, 3) << " s.\n\n"
+     << "**Cells**: share of correct answers (error area exactly 0, or within the rounding tolerance of the "
+        "answer's constructed points), then the count of each other outcome: **b** beyond rounding "
+        "(relative error area <= 1e-6), **g** gross (> 1e-6, or an unreadable answer), **r** refused the "
+        "input, **t** threw (gave up), **c** crashed, **h** hung (timed out); then the worst relative "
+        "error area (error area / largest of the operands', expected and result areas). *n/a*: "
+        "GEOS, Boost.Geometry and CGAL take only valid polygons with holes and are run only on the "
+        "classes marked valid. Clipper 6.4.2 runs with even-odd fill on every class.\n\n"
+     << "![heat map](robustness.svg)\n\n"
+     << "## Input classes\n\n| class | valid | n | what |\n|---|---|---|---|\n";
+  for (const InputClass& k : kClasses) {
+    md << "| " << k.name << " | " << (k.valid ? "yes" : "no") << " | " << k.minN;
+    if (k.maxN != k.minN) md << "–" << k.maxN;
+    md << " | " << k.description << " |\n";
+  }
+  for (Op op : kAllOps) {
+    md << "\n## " << name(op) << "\n\n| class |";
+    for (const Method& m : methods) md << " " << m.name << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < methods.size(); ++i) md << "---|";
+    md << "\n";
+    for (const InputClass& k : kClasses) {
+      md << "| " << k.name << " |";
+      for (const Method& m : methods) {
+        const auto it = cells[op][k.name].find(m.name);
+        md << " " << (it == cells[op][k.name].end() ? "n/a" : cellText(it->second)) << " |";
+      }
+      md << "\n";
+    }
+  }
+
+  // Findings, read off the tables.
+  md << "\n## Findings\n\n";
+  for (const Method& m : methods) {
+    int correct = 0, total = 0, gross = 0, beyond = 0, crashed = 0, hung = 0, threw = 0, refused = 0;
+    double worst = 0;
+    for (Op op : kAllOps) {
+      for (const auto& [cls, byMethod] : cells[op]) {
+        const auto it = byMethod.find(m.name);
+        if (it == byMethod.end()) continue;
+        const Cell& c = it->second;
+        correct += c.correct(), total += c.total, gross += c.count(Verdict::Gross), beyond += c.count(Verdict::Beyond);
+        crashed += c.count(Verdict::Crashed), hung += c.count(Verdict::TimedOut), threw += c.count(Verdict::Threw);
+        refused += c.count(Verdict::Refused);
+        worst = std::max(worst, c.worstRelative);
+      }
+    }
+    md << "- **" << m.name << "**: " << percent(correct, total) << " of " << total << " answers correct";
+    if (gross + beyond + crashed + hung + threw + refused == 0) {
+      md << "; no failure of any kind.\n";
+      continue;
+    }
+    md << "; " << gross << " gross, " << beyond << " beyond rounding (worst relative error " << fmt(worst) << "), "
+       << threw << " gave up, " << refused << " refused, " << crashed << " crashed, " << hung << " hung.";
+    const auto& byKind = failingCells[m.name];
+    for (const char* kind : {"gross", "beyond-rounding", "threw", "crashed", "timed-out"}) {
+      const auto it = byKind.find(kind);
+      if (it == byKind.end()) continue;
+      std::set<std::string> classes;
+      for (const std::string& cell : it->second) classes.insert(cell.substr(0, cell.find(' ')));
+      md << " Cells whose smallest failure is *" << kind << "*: " << it->second.size() << ", in classes ";
+      bool first = true;
+      for (const std::string& c : classes) md << (first ? "" : ", ") << c, first = false;
+      md << ".";
+    }
+    md << " Smallest failing cases: [counterexamples/" << m.name << "/](counterexamples/" << m.name << "/).\n";
+  }
+  md << "\n## Gross errors, cell by cell\n\n";
+  bool anyGross = false;
+  for (Op op : kAllOps) {
+    for (const InputClass& k : kClasses) {
+      for (const Method& m : methods) {
+        const auto it = cells[op][k.name].find(m.name);
+        if (it == cells[op][k.name].end() || it->second.count(Verdict::Gross) == 0) continue;
+        anyGross = true;
+        md << "- " << m.name << ", " << k.name << ", " << name(op) << ": " << it->second.count(Verdict::Gross) << "/"
+           << it->second.total << " gross, worst relative error " << fmt(it->second.worstRelative)
+           << " ([smallest failing case](counterexamples/" << m.name << "/robustness-" << k.name << "-" << name(op)
+           << ".svg))\n";
+      }
+    }
+  }
+  if (!anyGross) md << "None.\n";
+  io::writeText((out / "robustness.md").string(), md.str());
+  std::cout << "wrote " << (out / "robustness.md").string() << " in " << fmt(seconds, 3) << " s\n";
+  return 0;
+}
+
+int main(int argc, char** argv) { return tools::guardedMain("robustness", argc, argv, run); }
