@@ -28,7 +28,7 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
       return 0;  // refused cleanly: the right answer to bad input
     } catch (const ClipFailure& e) {
       if (strict) trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
-      record(target, std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
+      record(target, std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op, data, size);
       continue;
     }
     for (const Ring& ring : r) {
@@ -39,14 +39,14 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
     const auto violations = oracle::invariantViolations(p.subject, p.clip, op, r);
     if (!violations.empty()) {
       if (strict) trap("invariant: " + violations.front(), p.subject, p.clip, op);
-      record(target, "invariant: " + violations.front(), p.subject, p.clip, op);
+      record(target, "invariant: " + violations.front(), p.subject, p.clip, op, data, size);
     }
     oracle::SampleOptions so;
     so.uniformPoints = 200;
     const auto v = oracle::sampleCheck(p.subject, p.clip, op, r, so);
     if (!v.pass()) {
       if (strict) trap("sampling oracle disagrees", p.subject, p.clip, op);
-      record(target, "sampling oracle disagrees", p.subject, p.clip, op);
+      record(target, "sampling oracle disagrees", p.subject, p.clip, op, data, size);
     }
   }
   return 0;

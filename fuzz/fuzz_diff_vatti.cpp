@@ -51,7 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!gh::oracle::exactCheck(s, c, op, ours, {false, false, false}).pass) {
       gh::fuzz::trap("exact variant wrong where Clipper 6.4.2 differs", s, c, op);
     }
-    gh::fuzz::record("fuzz_diff_vatti", "Clipper 6.4.2 wrong (exact variant right)", s, c, op);
+    gh::fuzz::record("fuzz_diff_vatti", "Clipper 6.4.2 wrong (exact variant right)", s, c, op, data, size);
   }
   return 0;
 }
