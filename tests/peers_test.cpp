@@ -121,5 +121,28 @@ TEST(Peers, ExactOracleJudgesThemOnTheIssueCase) {
   }
 }
 
+// Found by experiments/robustness (simple+tiny): the adapter scaled coordinates near 1e-300 by
+// 2^1057, which overflows to infinity, so Clipper saw garbage and reported failure. Scaling
+// each coordinate by ldexp stays exact.
+TEST(Peers, Clipper6AdapterScalesTinyAndHugeCoordinatesExactly) {
+  const peers::Peer* clipper = peers::findPeer("clipper6");
+  ASSERT_NE(clipper, nullptr);
+  for (int e : {-997, -1040, 0, 497}) {
+    auto scaled = [e](const Region& r) {
+      Region out = r;
+      for (Ring& ring : out) {
+        for (Point& p : ring) p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+      }
+      return out;
+    };
+    const Region s = scaled({rect(0, 0, 4, 4)}), c = scaled({rect(1, 1, 6, 3)});
+    for (Op op : kAllOps) {
+      Region r;
+      ASSERT_NO_THROW(r = clipper->clip(s, c, op)) << "2^" << e << " " << name(op);
+      EXPECT_TRUE(oracle::exactCheck(s, c, op, r).pass) << "2^" << e << " " << name(op);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gh
