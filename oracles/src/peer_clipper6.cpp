@@ -44,14 +44,15 @@ class Clipper6 : public Peer {
       }
     }
     const int e = m > 0 ? std::ilogb(m) + 1 : 0;
-    const double scale = std::ldexp(1.0, 61 - e), unscale = std::ldexp(1.0, e - 61);
-    auto toPaths = [scale](const Region& r) {
+    // ldexp per coordinate, not a product with 2^(61 - e): that factor overflows for coordinates
+    // below ~2^-962 (and its inverse underflows for huge ones).
+    auto toPaths = [e](const Region& r) {
       ClipperLib::Paths paths(r.size());
       for (std::size_t i = 0; i < r.size(); ++i) {
         paths[i].reserve(r[i].size());
         for (const Point& p : r[i]) {
-          paths[i].emplace_back(static_cast<ClipperLib::cInt>(std::llround(p.x * scale)),
-                                static_cast<ClipperLib::cInt>(std::llround(p.y * scale)));
+          paths[i].emplace_back(static_cast<ClipperLib::cInt>(std::llround(std::ldexp(p.x, 61 - e))),
+                                static_cast<ClipperLib::cInt>(std::llround(std::ldexp(p.y, 61 - e))));
         }
       }
       return paths;
@@ -81,7 +82,7 @@ class Clipper6 : public Peer {
       Ring ring;
       ring.reserve(path.size());
       for (const auto& q : path) {
-        ring.push_back({static_cast<double>(q.X) * unscale, static_cast<double>(q.Y) * unscale});
+        ring.push_back({std::ldexp(static_cast<double>(q.X), e - 61), std::ldexp(static_cast<double>(q.Y), e - 61)});
       }
       out.push_back(std::move(ring));
     }
