@@ -68,6 +68,12 @@ step "every method on simple, holes, grid and random inputs, judged exactly -> r
 rm -rf results/peers-first-look results/peers-first-look.md
 "$BIN/peers_first_look" results 200
 
+step "robustness study: every method x input class x operation, judged exactly -> results/robustness.md, .svg, .json (about 2 minutes; --full about 15)"
+rm -f results/counterexamples/*/robustness-*
+ROBUSTNESS_ARGS=()
+[[ "${GHCLIP_FULL:-0}" == 1 ]] && ROBUSTNESS_ARGS+=(--full)
+"$BIN/robustness" results "${ROBUSTNESS_ARGS[@]}"
+
 step "exact vs naive on 10^5 degenerate cases -> results/exact-degenerate.md (about 4 minutes)"
 "$BIN/exact_degenerate" results 100000
 

@@ -1,5 +1,5 @@
 // The robustness study: every variant and every peer, input class by input class, every
-// operation, each answer judged by the exact oracle. Each case runs in a child process
+// operation, each answer judged by the exact oracle. Every case runs in a worker process
 // (common/isolated_run.h), so a crash or a hang of any method is counted, not fatal.
 // Writes OUT_DIR/robustness.md, OUT_DIR/robustness.svg (heat map, via gnuplot),
 // OUT_DIR/robustness.json (every count) and, for every failing cell, its smallest failing case in
@@ -163,7 +163,7 @@ int run(int argc, char** argv) {
   bool full = false;
   double timeout = 20;
   app.add_option("OUT_DIR", outDir, "directory for robustness.md/.svg/.json and counterexamples/")->required();
-  app.add_option("--cases", cases, "cases per class (default 12, 100 with --full)")->check(CLI::PositiveNumber);
+  app.add_option("--cases", cases, "cases per class (default 25, 200 with --full)")->check(CLI::PositiveNumber);
   app.add_flag("--full", full, "the large study");
   app.add_option("--timeout", timeout, "seconds before a case is killed")->check(CLI::PositiveNumber);
   try {
@@ -171,11 +171,12 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return tools::usageError("robustness", e.what());
   }
-  if (cases == 0) cases = full ? 100 : 12;
+  if (cases == 0) cases = full ? 200 : 25;
   const fs::path out = outDir;
   const std::vector<Method> methods = allMethods();
   IsolationLimits limits;
   limits.seconds = timeout;
+  IsolatedRunner runner(methods, limits);
 
   // cells[op][class][method]
   std::map<Op, std::map<std::string, std::map<std::string, Cell>>> cells;
@@ -186,13 +187,14 @@ int run(int argc, char** argv) {
       const work::Workload w = work::generate(k.name, n, static_cast<std::uint64_t>(i));
       const std::size_t size = vertexCount(w.subject) + vertexCount(w.clip);
       for (Op op : kAllOps) {
-        for (const Method& m : methods) {
+        for (std::size_t mi = 0; mi < methods.size(); ++mi) {
+          const Method& m = methods[mi];
           if (m.validInputOnly && !k.valid) continue;
           Cell& cell = cells[op][k.name][m.name];
           Case c;
           c.seed = i;
           c.size = size;
-          const IsolatedRun r = runIsolated(m, w.subject, w.clip, op, limits);
+          const IsolatedRun r = runner.run(mi, w.subject, w.clip, op);
           switch (r.status) {
             case IsolatedRun::Status::Answered:
               c.verdict = judgeAnswer(w.subject, w.clip, op, r.result, c.relative, c.message);
@@ -322,7 +324,7 @@ int run(int argc, char** argv) {
   md << "# Robustness: which clipper is right on which inputs\n\n"
      << markdown(provenance(argc, argv)) << "\n"
      << cases << " seeded cases per input class (seeds 1.." << cases << "), each with all five operations, "
-     << "each method run in its own child process (killed after " << timeout << " s, 8 GiB address space); "
+     << "each method run in a worker process (replaced when it crashes; killed after " << timeout << " s on one case; 8 GiB address space); "
      << "every answer judged by the exact CGAL-arrangement oracle. The study took " << fmt(seconds, 3) << " s.\n\n"
      << "**Cells**: share of correct answers (error area exactly 0, or within the rounding tolerance of the "
         "answer's constructed points), then the count of each other outcome: **b** beyond rounding "
@@ -390,6 +392,40 @@ int run(int argc, char** argv) {
     }
     md << " Smallest failing cases: [counterexamples/" << m.name << "/](counterexamples/" << m.name << "/).\n";
   }
+  // Peers that accepted an input (no refusal) and then crashed or answered grossly wrong: the
+  // smallest such case per peer and class, inline, as the minimal input of a bug report.
+  md << "\n### Suspected bugs in peer libraries\n\n"
+     << "A peer that accepts an input and then crashes, or returns an answer off by more than 1e-6 of "
+        "the problem's area, fails its own contract; the smallest such case per peer and class:\n\n";
+  bool anySuspect = false;
+  for (const Method& m : methods) {
+    if (m.name == "naive" || m.name == "sweep" || m.name == "exact") continue;
+    for (const InputClass& k : kClasses) {
+      const Case* smallest = nullptr;
+      Op smallestOp = Op::Intersection;
+      int count = 0, total = 0;
+      for (Op op : kAllOps) {
+        const auto it = cells[op][k.name].find(m.name);
+        if (it == cells[op][k.name].end()) continue;
+        count += it->second.count(Verdict::Gross) + it->second.count(Verdict::Crashed);
+        total += it->second.total;
+        const Case& c = it->second.smallest;
+        if (it->second.hasFailure && (c.verdict == Verdict::Gross || c.verdict == Verdict::Crashed) &&
+            (!smallest || c.size < smallest->size)) {
+          smallest = &c, smallestOp = op;
+        }
+      }
+      if (!smallest) continue;
+      anySuspect = true;
+      md << "- **" << m.name << "** on " << k.name << " (" << count << " of " << total << " answers): "
+         << name(smallestOp) << ", seed " << smallest->seed << ", " << key(smallest->verdict);
+      if (smallest->verdict == Verdict::Gross) md << " (relative error area " << fmt(smallest->relative, 3) << ")";
+      if (!smallest->message.empty()) md << " (" << smallest->message << ")";
+      md << ":\n  subject `" << io::writeWkt(smallest->subject) << "`,\n  clip `" << io::writeWkt(smallest->clip) << "`\n";
+    }
+  }
+  if (!anySuspect) md << "None.\n";
+
   md << "\n## Gross errors, cell by cell\n\n";
   bool anyGross = false;
   for (Op op : kAllOps) {

@@ -11,46 +11,39 @@
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
-#include <vector>
 
 #include "ghoracle/peer.h"
 
 namespace gh::experiments {
 namespace {
 
-// The child's report through a pipe: one status byte, then the message (refusal or exception)
-// or the answer's rings as raw doubles. Both ends are this program, so no format is needed
-// beyond the layout of the bytes.
+// Messages through the pipes are a length (u64) and that many bytes. Both ends are this program,
+// so no format is needed beyond the layout of the bytes:
+//   request:  method (u64), op (u8), subject, clip
+//   response: status (u8), then the message (refusal, exception) or the answer
+//   region:   ring count (u64), then per ring its point count (u64) and points as raw doubles
 enum : std::uint8_t { kAnswered = 1, kRefused = 2, kThrew = 3 };
 
-void put(std::vector<char>& out, const void* p, std::size_t n) {
-  out.insert(out.end(), static_cast<const char*>(p), static_cast<const char*>(p) + n);
-}
-void putU64(std::vector<char>& out, std::uint64_t v) { put(out, &v, sizeof v); }
-
-std::vector<char> encodeMessage(std::uint8_t status, const std::string& message) {
-  std::vector<char> out{static_cast<char>(status)};
-  putU64(out, message.size());
-  put(out, message.data(), message.size());
-  return out;
-}
-
-std::vector<char> encodeAnswer(const Region& r) {
-  std::vector<char> out{static_cast<char>(kAnswered)};
-  putU64(out, r.size());
-  for (const Ring& ring : r) {
-    putU64(out, ring.size());
-    put(out, ring.data(), ring.size() * sizeof(Point));
+struct Writer {
+  std::vector<char> bytes;
+  void put(const void* p, std::size_t n) {
+    bytes.insert(bytes.end(), static_cast<const char*>(p), static_cast<const char*>(p) + n);
   }
-  return out;
-}
+  void u64(std::uint64_t v) { put(&v, sizeof v); }
+  void u8(std::uint8_t v) { put(&v, 1); }
+  void text(const std::string& s) { u64(s.size()), put(s.data(), s.size()); }
+  void region(const Region& r) {
+    u64(r.size());
+    for (const Ring& ring : r) u64(ring.size()), put(ring.data(), ring.size() * sizeof(Point));
+  }
+};
 
 struct Reader {
-  const std::vector<char>& in;
-  std::size_t at = 1;
+  const std::vector<char>& bytes;
+  std::size_t at = 0;
   void get(void* p, std::size_t n) {
-    if (in.size() - at < n) throw std::runtime_error("truncated report from the child");
-    std::memcpy(p, in.data() + at, n);
+    if (bytes.size() - at < n) throw std::runtime_error("truncated message between runner and worker");
+    std::memcpy(p, bytes.data() + at, n);
     at += n;
   }
   std::uint64_t u64() {
@@ -58,106 +51,192 @@ struct Reader {
     get(&v, sizeof v);
     return v;
   }
+  std::uint8_t u8() {
+    std::uint8_t v;
+    get(&v, 1);
+    return v;
+  }
+  std::string text() {
+    std::string s(u64(), '\0');
+    get(s.data(), s.size());
+    return s;
+  }
+  Region region() {
+    Region r(u64());
+    for (Ring& ring : r) {
+      ring.resize(u64());
+      get(ring.data(), ring.size() * sizeof(Point));
+    }
+    return r;
+  }
 };
 
-void writeAll(int fd, const std::vector<char>& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t k = ::write(fd, bytes.data() + done, bytes.size() - done);
+bool writeAll(int fd, const void* data, std::size_t n) {
+  const char* p = static_cast<const char*>(data);
+  while (n > 0) {
+    const ssize_t k = ::write(fd, p, n);
     if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) return;
-    done += static_cast<std::size_t>(k);
+    if (k <= 0) return false;
+    p += k, n -= static_cast<std::size_t>(k);
   }
+  return true;
 }
 
-[[noreturn]] void child(int fd, const Method& method, const Region& subject, const Region& clip, Op op,
-                        const IsolationLimits& limits) {
-  const rlimit as{limits.addressSpaceBytes, limits.addressSpaceBytes};
-  ::setrlimit(RLIMIT_AS, &as);
-  std::vector<char> report;
-  try {
-    report = encodeAnswer(method.clip(subject, clip, op));
-  } catch (const peers::PeerRefusal& e) {
-    report = encodeMessage(kRefused, e.what());
-  } catch (const std::exception& e) {
-    report = encodeMessage(kThrew, e.what());
-  } catch (...) {
-    report = encodeMessage(kThrew, "unknown exception");
+bool sendMessage(int fd, const std::vector<char>& bytes) {
+  const std::uint64_t n = bytes.size();
+  return writeAll(fd, &n, sizeof n) && writeAll(fd, bytes.data(), bytes.size());
+}
+
+// Blocking read of exactly n bytes (the worker's side); false at end of file.
+bool readAll(int fd, void* data, std::size_t n) {
+  char* p = static_cast<char*>(data);
+  while (n > 0) {
+    const ssize_t k = ::read(fd, p, n);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) return false;
+    p += k, n -= static_cast<std::size_t>(k);
   }
-  writeAll(fd, report);
-  ::_exit(0);  // no atexit handlers, no flushing of the parent's buffers
+  return true;
+}
+
+enum class Receive { Done, Closed, TimedOut };
+
+// Reads exactly n bytes before the deadline (the runner's side).
+Receive readBefore(int fd, char* p, std::size_t n, std::chrono::steady_clock::time_point deadline) {
+  while (n > 0) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return Receive::TimedOut;
+    pollfd pfd{fd, POLLIN, 0};
+    const int ready = ::poll(&pfd, 1, static_cast<int>(left.count()));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready == 0) return Receive::TimedOut;
+    const ssize_t k = ::read(fd, p, n);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) return Receive::Closed;
+    p += k, n -= static_cast<std::size_t>(k);
+  }
+  return Receive::Done;
 }
 
 }  // namespace
 
-IsolatedRun runIsolated(const Method& method, const Region& subject, const Region& clip, Op op,
-                        const IsolationLimits& limits) {
-  int fds[2];
-  if (::pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+IsolatedRunner::IsolatedRunner(std::vector<Method> methods, IsolationLimits limits)
+    : methods_(std::move(methods)), limits_(limits) {
+  ::signal(SIGPIPE, SIG_IGN);  // a dead worker shows up as a failed write, not a dead runner
+}
+
+IsolatedRunner::~IsolatedRunner() { stop(false); }
+
+void IsolatedRunner::start() {
+  int request[2], response[2];
+  if (::pipe(request) != 0 || ::pipe(response) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
   if (pid == 0) {
-    ::close(fds[0]);
-    child(fds[1], method, subject, clip, op, limits);
+    ::close(request[1]);
+    ::close(response[0]);
+    serve(request[0], response[1]);
   }
-  ::close(fds[1]);
+  ::close(request[0]);
+  ::close(response[1]);
+  pid_ = pid;
+  toWorker_ = request[1];
+  fromWorker_ = response[0];
+  served_ = 0;
+}
 
-  std::vector<char> bytes;
-  bool timedOut = false;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limits.seconds);
-  char buffer[1 << 16];
+// Closing the request pipe ends a healthy worker; kill ends a hung one.
+void IsolatedRunner::stop(bool kill) {
+  if (pid_ < 0) return;
+  if (kill) ::kill(pid_, SIGKILL);
+  ::close(toWorker_);
+  ::close(fromWorker_);
+  int status;
+  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+}
+
+void IsolatedRunner::serve(int in, int out) {
+  const rlimit as{limits_.addressSpaceBytes, limits_.addressSpaceBytes};
+  ::setrlimit(RLIMIT_AS, &as);
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) {
-      timedOut = true;
-      break;
+    std::uint64_t n;
+    if (!readAll(in, &n, sizeof n)) ::_exit(0);
+    std::vector<char> request(n);
+    if (!readAll(in, request.data(), n)) ::_exit(0);
+    Writer response;
+    try {
+      Reader r{request};
+      const std::size_t method = r.u64();
+      const Op op = static_cast<Op>(r.u8());
+      const Region subject = r.region(), clip = r.region();
+      const Region answer = methods_.at(method).clip(subject, clip, op);
+      response.u8(kAnswered);
+      response.region(answer);
+    } catch (const peers::PeerRefusal& e) {
+      response = {};
+      response.u8(kRefused), response.text(e.what());
+    } catch (const std::exception& e) {
+      response = {};
+      response.u8(kThrew), response.text(e.what());
+    } catch (...) {
+      response = {};
+      response.u8(kThrew), response.text("unknown exception");
     }
-    pollfd p{fds[0], POLLIN, 0};
-    const int ready = ::poll(&p, 1, static_cast<int>(left.count()));
-    if (ready < 0 && errno == EINTR) continue;
-    if (ready == 0) {
-      timedOut = true;
-      break;
-    }
-    const ssize_t k = ::read(fds[0], buffer, sizeof buffer);
-    if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) break;  // end of the report (or an error: judged by the exit status below)
-    bytes.insert(bytes.end(), buffer, buffer + k);
+    if (!sendMessage(out, response.bytes)) ::_exit(0);
   }
-  ::close(fds[0]);
-  if (timedOut) ::kill(pid, SIGKILL);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
+}
+
+IsolatedRun IsolatedRunner::run(std::size_t method, const Region& subject, const Region& clip, Op op) {
+  if (pid_ >= 0 && served_ >= kCasesPerWorker) stop(false);
+  if (pid_ < 0) start();
+  ++served_;
+  Writer request;
+  request.u64(method);
+  request.u8(static_cast<std::uint8_t>(op));
+  request.region(subject);
+  request.region(clip);
 
   IsolatedRun run;
-  if (timedOut) {
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limits_.seconds));
+  std::uint64_t n = 0;
+  std::vector<char> response;
+  Receive got = sendMessage(toWorker_, request.bytes) ? readBefore(fromWorker_, reinterpret_cast<char*>(&n), sizeof n, deadline)
+                                                      : Receive::Closed;
+  if (got == Receive::Done) {
+    response.resize(n);
+    got = readBefore(fromWorker_, response.data(), n, deadline);
+  }
+  if (got == Receive::TimedOut) {
+    stop(true);
     run.status = IsolatedRun::Status::TimedOut;
-    run.message = "no answer within " + std::to_string(limits.seconds) + " s";
+    run.message = "no answer within " + std::to_string(limits_.seconds) + " s";
     return run;
   }
-  if (WIFSIGNALED(status)) {
-    run.status = IsolatedRun::Status::Crashed;
-    run.message = std::string("killed by signal ") + std::to_string(WTERMSIG(status)) + " (" + ::strsignal(WTERMSIG(status)) + ")";
-    return run;
-  }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty()) {
-    run.status = IsolatedRun::Status::Crashed;
-    run.message = "exited with status " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + " without an answer";
-    return run;
-  }
-  Reader r{bytes};
-  if (bytes[0] == kAnswered) {
-    run.status = IsolatedRun::Status::Answered;
-    run.result.resize(r.u64());
-    for (Ring& ring : run.result) {
-      ring.resize(r.u64());
-      r.get(ring.data(), ring.size() * sizeof(Point));
+  if (got == Receive::Closed) {
+    // The worker died on this case: say how.
+    ::close(toWorker_);
+    ::close(fromWorker_);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
+    pid_ = -1;
+    run.status = IsolatedRun::Status::Crashed;
+    run.message = WIFSIGNALED(status) ? std::string("killed by signal ") + std::to_string(WTERMSIG(status)) + " (" +
+                                            ::strsignal(WTERMSIG(status)) + ")"
+                                      : "exited with status " + std::to_string(WEXITSTATUS(status));
+    return run;
+  }
+  Reader r{response};
+  const std::uint8_t status = r.u8();
+  if (status == kAnswered) {
+    run.status = IsolatedRun::Status::Answered;
+    run.result = r.region();
   } else {
-    run.status = bytes[0] == kRefused ? IsolatedRun::Status::Refused : IsolatedRun::Status::Threw;
-    run.message.resize(r.u64());
-    r.get(run.message.data(), run.message.size());
+    run.status = status == kRefused ? IsolatedRun::Status::Refused : IsolatedRun::Status::Threw;
+    run.message = r.text();
   }
   return run;
 }
