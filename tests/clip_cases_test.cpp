@@ -5,6 +5,7 @@
 
 #include "ghclip/clip.h"
 #include "ghclip/measure.h"
+#include "ghwork/generators.h"
 #include "hand_cases.h"
 
 namespace gh {
@@ -91,6 +92,21 @@ INSTANTIATE_TEST_SUITE_P(Hand, HandCaseTest, testing::ValuesIn(params()),
                          [](const testing::TestParamInfo<CaseParam>& info) {
                            return std::string(name(info.param.variant)) + "_" + info.param.c.name;
                          });
+
+// The exact variant's default search: all pairs where nearly every pair of edge boxes overlaps
+// (the paper's random workload: the sweep would only add bookkeeping), the sweep where edges are
+// short against the extent (two circles: the sweep skips almost every pair).
+TEST(SearchChoice, ExactTestsAllPairsOnRandomPolygonsAndSweepsCircles) {
+  Options o;
+  o.variant = Variant::Exact;
+  Stats stats;
+  const work::Workload random = work::generate("random", 100, 1);
+  clip(random.subject, random.clip, Op::Intersection, o, &stats);
+  EXPECT_EQ(stats.candidatePairs, 100u * 100u);
+  const work::Workload circles = work::generate("circles", 1000, 1);
+  clip(circles.subject, circles.clip, Op::Intersection, o, &stats);
+  EXPECT_LT(stats.candidatePairs, 1000u * 1000u / 50);
+}
 
 }  // namespace
 }  // namespace gh

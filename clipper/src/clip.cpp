@@ -13,6 +13,7 @@
 #include "naive_arithmetic.h"
 #include "phase1_intersections.h"
 #include "phase3_tracing.h"
+#include "search_choice.h"
 #include "sweep_search.h"
 #include "vertex_graph.h"
 
@@ -34,7 +35,11 @@ detail::Phase1Result withSearch(detail::Operand subject, detail::Operand clip, b
 }
 
 detail::Phase1Result runPhase1(detail::Operand subject, detail::Operand clip, const Options& o, Stats& stats) {
-  const bool sweep = o.search == Search::Default ? o.variant != Variant::Naive : o.search == Search::Sweep;
+  bool sweep = o.search == Search::Sweep;
+  if (o.search == Search::Default) {
+    // naive: the paper's all pairs; sweep: the sweep; exact: whichever pays (search_choice.h).
+    sweep = o.variant == Variant::Sweep || (o.variant == Variant::Exact && detail::sweepPays(subject, clip));
+  }
   if (o.variant == Variant::Exact) {
     return withSearch<detail::ExactArithmetic>(std::move(subject), std::move(clip), sweep, stats);
   }

@@ -23,43 +23,10 @@ constexpr Wide kU = std::numeric_limits<Wide>::epsilon() / 2;  // unit roundoff 
 constexpr bool kWideHasRange =
     std::numeric_limits<Wide>::max_exponent >= 4096 && std::numeric_limits<Wide>::min_exponent <= -4096;
 
-// The determinant O(b1, b2, a) = (b2 - b1) x (a - b1) with a stage-A style bound on its error in
-// Wide (differences rounded, two products, one subtraction): (3 + 16u) u (|l| + |r|).
-struct WideDeterminant {
-  Wide value, bound;
-};
-WideDeterminant determinant(Point b1, Point b2, Point a) {
-  const Wide l = (Wide(b2.x) - b1.x) * (Wide(a.y) - b1.y);
-  const Wide r = (Wide(b2.y) - b1.y) * (Wide(a.x) - b1.x);
-  return {l - r, (3 + 16 * kU) * kU * (std::abs(l) + std::abs(r))};
-}
-
 // A coordinate with a bound on its error: [value - bound, value + bound] holds the exact one.
 struct Enclosure {
   Wide value, bound;
 };
-
-// Parameter t = w1 / (w1 - w2) along a segment whose endpoints lie on opposite sides of (or on)
-// the other segment's line, and 1 - t = -w2 / (w1 - w2): bounds on both from those of w1, w2.
-struct Parameter {
-  Wide t, oneMinusT, errT, errOneMinusT;
-  bool valid;
-};
-Parameter parameter(WideDeterminant w1, WideDeterminant w2) {
-  const Wide d = w1.value - w2.value;
-  const Wide ed = w1.bound + w2.bound + kU * std::abs(d);
-  const Wide margin = std::abs(d) - ed;
-  Parameter p{};
-  if (!(margin > 0)) return p;
-  const Wide inverse = 1 / d, inverseMargin = 1 / margin;
-  p.t = w1.value * inverse;
-  p.oneMinusT = -w2.value * inverse;
-  // |w/d - W/D| <= (e_w + |w/d| e_d) / (|d| - e_d), plus the roundings of 1/d and the product.
-  p.errT = ((w1.bound + std::abs(p.t) * ed) * inverseMargin + 2 * kU * std::abs(p.t)) * (1 + 8 * kU);
-  p.errOneMinusT = ((w2.bound + std::abs(p.oneMinusT) * ed) * inverseMargin + 2 * kU * std::abs(p.oneMinusT)) * (1 + 8 * kU);
-  p.valid = std::isfinite(p.errT) && std::isfinite(p.errOneMinusT);
-  return p;
-}
 
 // from + s * (to - from) with |s - s_exact| <= errS: value and error bound.
 Enclosure interpolate(double from, double to, Wide s, Wide errS) {
@@ -91,7 +58,7 @@ void neighbours(double d, double& below, double& above) {
 // lies strictly between the two neighbours of its rounded centre.
 bool certify(Enclosure e, double& out) {
   const double d = static_cast<double>(e.value);
-  if (!std::isfinite(d) || !std::isfinite(e.bound)) return false;
+  if (!std::isfinite(d)) return false;
   double below, above;
   neighbours(d, below, above);
   if (!(e.value - e.bound > below && e.value + e.bound < above)) return false;
@@ -135,26 +102,37 @@ Point exactCrossing(Point p1, Point p2, Point q1, Point q2) {
   return {nearestDouble(x), nearestDouble(y)};
 }
 
+// The crossing interpolated along a1a2 (b1b2 the other segment), if both coordinates certify.
+// The determinants w1, w2 of a1 and a2 against line b1b2 (opposite signs) carry stage-A bounds
+// in Wide, (3 + 16u) u (|l| + |r|); the parameter is taken from the nearer endpoint,
+// s = |w| / |w1 - w2|, with |s - S| <= (e_w + s e_d) / (|d| - e_d), where 1 / (|d| - e_d) is taken
+// as 2 / |d| (loose by at most 2, which the 11 extra bits of Wide absorb; it saves a division).
+bool alongSegment(Point a1, Point a2, Point b1, Point b2, Point& out) {
+  constexpr Wide kDet = (3 + 16 * kU) * kU;
+  const Wide bx = Wide(b2.x) - b1.x, by = Wide(b2.y) - b1.y;
+  const Wide l1 = bx * (Wide(a1.y) - b1.y), r1 = by * (Wide(a1.x) - b1.x);
+  const Wide l2 = bx * (Wide(a2.y) - b1.y), r2 = by * (Wide(a2.x) - b1.x);
+  const Wide w1 = l1 - r1, w2 = l2 - r2;
+  const Wide e1 = kDet * (std::abs(l1) + std::abs(r1)), e2 = kDet * (std::abs(l2) + std::abs(r2));
+  const Wide d = std::abs(w1 - w2);
+  const Wide ed = e1 + e2 + kU * d;
+  if (!(2 * ed <= d)) return false;
+  const bool fromSecond = std::abs(w2) < std::abs(w1);
+  const Wide inverse = 1 / d;
+  const Wide s = std::abs(fromSecond ? w2 : w1) * inverse;
+  const Wide err = (((fromSecond ? e2 : e1) + s * ed) * 2 * inverse + 2 * kU * s) * (1 + 8 * kU);
+  if (!(err < 1)) return false;  // also NaN
+  const Point from = fromSecond ? a2 : a1, to = fromSecond ? a1 : a2;
+  return certify(interpolate(from.x, to.x, s, err), out.x) && certify(interpolate(from.y, to.y, s, err), out.y);
+}
+
 }  // namespace
 
 Point constructCrossing(Point p1, Point p2, Point q1, Point q2) {
-  if (kWideHasRange) {
-    const Parameter s = parameter(determinant(q1, q2, p1), determinant(q1, q2, p2));
-    const Parameter c = parameter(determinant(p1, p2, q1), determinant(p1, p2, q2));
-    if (s.valid && c.valid) {
-      // Each coordinate along the segment with the smaller extent in it (exact along an
-      // axis-parallel segment), from its endpoint nearer to the crossing.
-      auto coordinate = [&](double Point::*axis) {
-        const bool alongP = std::abs(p2.*axis - p1.*axis) <= std::abs(q2.*axis - q1.*axis);
-        const Point a = alongP ? p1 : q1, b = alongP ? p2 : q2;
-        const Parameter& t = alongP ? s : c;
-        return t.t <= t.oneMinusT ? interpolate(a.*axis, b.*axis, t.t, t.errT)
-                                  : interpolate(b.*axis, a.*axis, t.oneMinusT, t.errOneMinusT);
-      };
-      Point out;
-      if (certify(coordinate(&Point::x), out.x) && certify(coordinate(&Point::y), out.y)) return out;
-    }
-  }
+  Point out;
+  // Along p first; along q when p cannot certify (a coordinate much nearer 0 than p's extent in
+  // it, e.g. the crossing of a long slanted edge with an axis).
+  if (kWideHasRange && (alongSegment(p1, p2, q1, q2, out) || alongSegment(q1, q2, p1, p2, out))) return out;
   return exactCrossing(p1, p2, q1, q2);
 }
 

@@ -60,20 +60,6 @@ int compare(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2, int bSig
 
 }  // namespace
 
-Sign clipEdgeSide(Sign o, Point q1, Point q2) {
-  if (o != Sign::Zero) return o;
-  const int dy = signOfDifference(q2.y, q1.y);
-  if (dy != 0) return toSign(dy);
-  return toSign(-signOfDifference(q2.x, q1.x));
-}
-
-Sign subjectEdgeSide(Sign o, Point p1, Point p2) {
-  if (o != Sign::Zero) return o;
-  const int ey = signOfDifference(p2.y, p1.y);
-  if (ey != 0) return toSign(-ey);
-  return toSign(signOfDifference(p2.x, p1.x));
-}
-
 Sign clipEdgeSide(Point q1, Point q2, Point p) { return clipEdgeSide(orientation(q1, q2, p), q1, q2); }
 
 Sign subjectEdgeSide(Point p1, Point p2, Point q) { return subjectEdgeSide(orientation(p1, p2, q), p1, p2); }

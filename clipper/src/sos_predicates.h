@@ -16,9 +16,20 @@ Sign clipEdgeSide(Point q1, Point q2, Point p);
 //   O(p1, p2, q) - (p2.y - p1.y) eps + (p2.x - p1.x) eps^2
 Sign subjectEdgeSide(Point p1, Point p2, Point q);
 
-// The same two expansions for a caller that already has the exact O (its eps-free term).
-Sign clipEdgeSide(Sign o, Point q1, Point q2);
-Sign subjectEdgeSide(Sign o, Point p1, Point p2);
+// The same two expansions for a caller that already has the exact O (its eps-free term); inline,
+// as phase 1 asks them for every pair of edges whose boxes overlap.
+inline Sign clipEdgeSide(Sign o, Point q1, Point q2) {
+  if (o != Sign::Zero) return o;
+  const int dy = signOfDifference(q2.y, q1.y);
+  if (dy != 0) return toSign(dy);
+  return toSign(-signOfDifference(q2.x, q1.x));
+}
+inline Sign subjectEdgeSide(Sign o, Point p1, Point p2) {
+  if (o != Sign::Zero) return o;
+  const int ey = signOfDifference(p2.y, p1.y);
+  if (ey != 0) return toSign(-ey);
+  return toSign(signOfDifference(p2.x, p1.x));
+}
 
 // Do subject edge p1p2 and the translated clip edge q1q2 cross? (Never touch: SoS.)
 bool cross(Point p1, Point p2, Point q1, Point q2);

@@ -13,8 +13,10 @@
 
 namespace gh {
 
-// Which candidate search phase 1 uses; Default is the variant's own (naive: all pairs; sweep and
-// exact: the sweep). Overriding it isolates the cost of the arithmetic policy in benchmarks.
+// Which candidate search phase 1 uses; Default is the variant's own (naive: all pairs, as in the
+// paper; sweep: the sweep; exact: the sweep when edges are short against the extent of the input,
+// all pairs when nearly every pair would be reported anyway). Overriding it isolates the cost of
+// the arithmetic policy in benchmarks.
 enum class Search { Default, AllPairs, Sweep };
 
 struct Options {
