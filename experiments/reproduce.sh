@@ -80,7 +80,7 @@ step "exact vs naive on 10^5 degenerate cases -> results/exact-degenerate.md (ab
 step "sweep benchmark (realistic and random workloads) -> results/sweep.md, sweep.json, sweep.svg"
 SWEEP_ARGS=()
 [[ "${GHCLIP_FULL:-0}" == 1 ]] && SWEEP_ARGS+=(--full)
-"$BIN/sweep_benchmark" "${SWEEP_ARGS[@]}" --benchmark_repetitions=3 \
+"$BIN/sweep_benchmark" "${SWEEP_ARGS[@]}" --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
   --benchmark_out=results/sweep.json --benchmark_out_format=json >results/sweep-benchmark.log 2>&1 \
   || { tail -20 results/sweep-benchmark.log; exit 1; }
 "$BIN/report_sweep" results/sweep.json results/sweep.md results/sweep
@@ -89,7 +89,7 @@ rm -f results/sweep.gp results/sweep.dat
 step "Table 1 (the paper's evaluation) and Table 2 -> results/table1.md, table2.md, table1.svg, tables.json"
 TABLE_ARGS=()
 [[ "${GHCLIP_FULL:-0}" == 1 ]] && TABLE_ARGS+=(--full)
-"$BIN/table_benchmark" "${TABLE_ARGS[@]}" --benchmark_repetitions=3 \
+"$BIN/table_benchmark" "${TABLE_ARGS[@]}" --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
   --benchmark_out=results/tables.json --benchmark_out_format=json >results/table-benchmark.log 2>&1 \
   || { tail -20 results/table-benchmark.log; exit 1; }
 "$BIN/report_tables" results/tables.json results
