@@ -36,7 +36,7 @@ int run(int argc, char** argv) {
   app.add_option("--op", opName,
                  "intersection | union | difference | reverse-difference | xor")
       ->required();
-  app.add_option("--variant", variantName, "naive (the paper) | sweep")->capture_default_str();
+  app.add_option("--variant", variantName, "naive (the paper: all pairs, perturbation) | sweep (naive with a sweep) | exact (exact predicates, Simulation of Simplicity)")->capture_default_str();
   app.add_option("--peer", peerName,
                  "clip with a peer library instead: clipper6 | geos | boost | cgal (geos, boost "
                  "and cgal take only simple polygons with holes and refuse the rest, exit 2)");
