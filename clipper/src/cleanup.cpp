@@ -76,8 +76,12 @@ bool anyVertexRepeats(const Region& region) {
   for (const Ring& ring : region) n += ring.size();
   std::size_t capacity = 16;
   while (capacity < 2 * n) capacity *= 2;
-  std::vector<Point> slots(capacity);
-  std::vector<char> used(capacity, 0);
+  // Reused between calls: this runs on every answer of the exact variant, and on small answers
+  // the allocation would cost more than the pass.
+  thread_local std::vector<Point> slots;
+  thread_local std::vector<char> used;
+  if (slots.size() < capacity) slots.resize(capacity);
+  used.assign(capacity, 0);
   const PointHash hash;
   for (const Ring& ring : region) {
     for (const Point& p : ring) {

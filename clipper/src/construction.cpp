@@ -28,13 +28,13 @@ struct Enclosure {
   Wide value, bound;
 };
 
-// from + s * (to - from) with |s - s_exact| <= errS: value and error bound.
-Enclosure interpolate(double from, double to, Wide s, Wide errS) {
-  const Wide delta = Wide(to) - from;  // rounded once
-  const Wide step = s * delta;
-  const Wide value = from + step;
-  const Wide bound = (errS * std::abs(delta) + 2 * kU * std::abs(step) + kU * std::abs(value)) * (1 + 8 * kU);
-  return {value, bound};
+// from + t * (to - from) with |t - t_exact| <= errT: value and error bound. The product and the
+// difference are rounded once each, the sum once: |error| <= errT |delta| + 2u t |delta| + u |value|
+// (to first order; the last factor covers the rest).
+Enclosure interpolate(double from, double to, Wide t, Wide errT) {
+  const Wide delta = Wide(to) - from;
+  const Wide value = from + t * delta;
+  return {value, ((errT + 2 * kU * std::abs(t)) * std::abs(delta) + kU * std::abs(value)) * (1 + 8 * kU)};
 }
 
 // The two doubles next to a finite d (nextafter without the library call: adjacent doubles of
@@ -103,27 +103,25 @@ Point exactCrossing(Point p1, Point p2, Point q1, Point q2) {
 }
 
 // The crossing interpolated along a1a2 (b1b2 the other segment), if both coordinates certify.
-// The determinants w1, w2 of a1 and a2 against line b1b2 (opposite signs) carry stage-A bounds
-// in Wide, (3 + 16u) u (|l| + |r|); the parameter is taken from the nearer endpoint,
-// s = |w| / |w1 - w2|, with |s - S| <= (e_w + s e_d) / (|d| - e_d), where 1 / (|d| - e_d) is taken
-// as 2 / |d| (loose by at most 2, which the 11 extra bits of Wide absorb; it saves a division).
+// The determinants w1, w2 of a1 and a2 against line b1b2 (opposite signs) share one stage-A
+// bound e in Wide, (3 + 16u) u (|l1| + |r1| + |l2| + |r2|); t = w1 / (w1 - w2) with
+// |t - T| <= (e + t e_d) / (|d| - e_d), where 1 / (|d| - e_d) is taken as 2 / |d| (loose by at
+// most 2, which the 11 extra bits of Wide absorb; it saves a division). No branch depends on the
+// data until the certificate: they would be mispredicted half the time.
 bool alongSegment(Point a1, Point a2, Point b1, Point b2, Point& out) {
   constexpr Wide kDet = (3 + 16 * kU) * kU;
   const Wide bx = Wide(b2.x) - b1.x, by = Wide(b2.y) - b1.y;
   const Wide l1 = bx * (Wide(a1.y) - b1.y), r1 = by * (Wide(a1.x) - b1.x);
   const Wide l2 = bx * (Wide(a2.y) - b1.y), r2 = by * (Wide(a2.x) - b1.x);
   const Wide w1 = l1 - r1, w2 = l2 - r2;
-  const Wide e1 = kDet * (std::abs(l1) + std::abs(r1)), e2 = kDet * (std::abs(l2) + std::abs(r2));
-  const Wide d = std::abs(w1 - w2);
-  const Wide ed = e1 + e2 + kU * d;
-  if (!(2 * ed <= d)) return false;
-  const bool fromSecond = std::abs(w2) < std::abs(w1);
+  const Wide e = kDet * (std::abs(l1) + std::abs(r1) + std::abs(l2) + std::abs(r2));
+  const Wide d = w1 - w2, ad = std::abs(d);
+  const Wide ed = 2 * e + kU * ad;
   const Wide inverse = 1 / d;
-  const Wide s = std::abs(fromSecond ? w2 : w1) * inverse;
-  const Wide err = (((fromSecond ? e2 : e1) + s * ed) * 2 * inverse + 2 * kU * s) * (1 + 8 * kU);
-  if (!(err < 1)) return false;  // also NaN
-  const Point from = fromSecond ? a2 : a1, to = fromSecond ? a1 : a2;
-  return certify(interpolate(from.x, to.x, s, err), out.x) && certify(interpolate(from.y, to.y, s, err), out.y);
+  const Wide t = w1 * inverse;
+  const Wide err = ((e + std::abs(t) * ed) * 2 * std::abs(inverse) + 2 * kU * std::abs(t)) * (1 + 8 * kU);
+  if (!(2 * ed <= ad) || !(err < 1)) return false;  // also NaN
+  return certify(interpolate(a1.x, a2.x, t, err), out.x) && certify(interpolate(a1.y, a2.y, t, err), out.y);
 }
 
 }  // namespace
