@@ -74,5 +74,17 @@ TEST(SoS, OrderingFallsBackToExactArithmeticSafely) {
   EXPECT_NE(sos::compareAlongSubject({-1, 0}, {1, 0}, {0, -1}, {0, 0}, {0, 0}, {1, 1}), 0);
 }
 
+// Found by the OGC conversion test at 2^-540: between 2^-900 and ~2^-537 the differences of
+// coordinates are "safe" for the filter but their products underflow to exactly 0, which the
+// running error bound took for an exact zero: orientation() said Zero for a plain right turn.
+TEST(Orientation, ProductsThatUnderflowToZeroAreNotExactZeros) {
+  for (int e : {-300, -540, -600, -700, -1000}) {
+    const double s = std::ldexp(1.0, e);
+    EXPECT_EQ(orientation({4 * s, 4 * s}, {6 * s, 4 * s}, {6 * s, 6 * s}), Sign::Positive) << "2^" << e;
+    EXPECT_EQ(orientation({4 * s, 4 * s}, {6 * s, 6 * s}, {6 * s, 4 * s}), Sign::Negative) << "2^" << e;
+    EXPECT_EQ(orientation({4 * s, 4 * s}, {6 * s, 6 * s}, {8 * s, 8 * s}), Sign::Zero) << "2^" << e;
+  }
+}
+
 }  // namespace
 }  // namespace gh::detail

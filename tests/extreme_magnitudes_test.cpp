@@ -39,6 +39,11 @@ void expectExactEverywhere(double s) {
 
 TEST(ExtremeMagnitudes, SubnormalCoordinates) { expectExactEverywhere(std::numeric_limits<double>::denorm_min() * 2); }
 TEST(ExtremeMagnitudes, TinyCoordinates) { expectExactEverywhere(1e-300); }
+// Differences near 2^-540: products underflow to exactly 0 (see Orientation.ProductsThatUnderflow...).
+TEST(ExtremeMagnitudes, CoordinatesWhoseProductsUnderflow) {
+  expectExactEverywhere(std::ldexp(1.0, -540));
+  expectExactEverywhere(std::ldexp(1.0, -620));
+}
 // The library accepts |coordinates| up to 2^500 (~3.3e150): squares of them still fit a double.
 TEST(ExtremeMagnitudes, HugeCoordinates) { expectExactEverywhere(1e149); }
 
