@@ -65,7 +65,9 @@ inline Approx operator+(const Approx& a, const Approx& b) { return a - Approx{-b
 
 inline Approx operator*(const Approx& a, const Approx& b) {
   const double v = a.v * b.v;
-  if (!approx::safeMagnitude(a.v) || !approx::safeMagnitude(b.v) || !approx::safeMagnitude(v)) {
+  // A product of nonzero factors that underflowed to 0.0 is not an exact zero.
+  const bool underflowed = v == 0 && a.v != 0 && b.v != 0;
+  if (underflowed || !approx::safeMagnitude(a.v) || !approx::safeMagnitude(b.v) || !approx::safeMagnitude(v)) {
     return {v, approx::kInf};
   }
   return {v, std::abs(a.v) * b.e + std::abs(b.v) * a.e + a.e * b.e +
