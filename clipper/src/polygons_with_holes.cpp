@@ -43,6 +43,27 @@ bool insideRing(const Ring& ring, Point p) {
   return inside;
 }
 
+// The orientation of a simple ring, exactly (its area in doubles underflows near 1e-300): the
+// turn at its lexicographically smallest vertex, which is convex; Zero only when every vertex lies
+// on one line (a simple ring cannot turn back on itself there).
+Sign orientationOf(const Ring& ring) {
+  const std::size_t n = ring.size();
+  std::size_t m = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (ring[i].x < ring[m].x || (ring[i].x == ring[m].x && ring[i].y < ring[m].y)) m = i;
+  }
+  return orientation(ring[(m + n - 1) % n], ring[m], ring[(m + 1) % n]);
+}
+
+// For collinear p, q, r (q != p): does r lie back over q, towards p (or on q)? Decided by
+// comparisons along an axis on which p and q differ, so nothing under- or overflows.
+bool turnsBack(Point p, Point q, Point r) {
+  const bool alongX = p.x != q.x;
+  const int in = alongX ? detail::signOfDifference(q.x, p.x) : detail::signOfDifference(q.y, p.y);
+  const int out = alongX ? detail::signOfDifference(r.x, q.x) : detail::signOfDifference(r.y, q.y);
+  return in * out <= 0;
+}
+
 std::string at(Point p) {
   std::ostringstream s;
   s.precision(17);
@@ -71,7 +92,7 @@ PolygonsWithHoles toPolygonsWithHoles(const Region& input) {
       if (eThenF && fThenE) return;  // a 2-edge ring cannot pass normalisation
       // Consecutive edges p->q->r: only q is shared; collinear with r back over q is a spike.
       const Point p = eThenF ? a : c, q = eThenF ? b : d, r = eThenF ? d : b;
-      if (orientation(p, q, r) == Sign::Zero && (r.x - q.x) * (q.x - p.x) + (r.y - q.y) * (q.y - p.y) <= 0) {
+      if (orientation(p, q, r) == Sign::Zero && turnsBack(p, q, r)) {
         refusal = "ring " + std::to_string(ringOf[e] + 1) + " folds back on itself at " + at(q);
       }
       return;
@@ -88,7 +109,7 @@ PolygonsWithHoles toPolygonsWithHoles(const Region& input) {
     return out;
   }
   for (std::size_t r = 0; r < region.size(); ++r) {
-    if (signedArea(region[r]) == 0) {
+    if (orientationOf(region[r]) == Sign::Zero) {
       out.refusal = "not simple polygons with holes: ring " + std::to_string(r + 1) + " has zero area";
       return out;
     }
@@ -103,7 +124,7 @@ PolygonsWithHoles toPolygonsWithHoles(const Region& input) {
   }
   std::vector<int> polygonOf(n, -1);
   auto oriented = [](Ring ring, bool ccw) {
-    if ((signedArea(ring) > 0) != ccw) std::reverse(ring.begin(), ring.end());
+    if ((orientationOf(ring) == Sign::Positive) != ccw) std::reverse(ring.begin(), ring.end());
     return ring;
   };
   for (std::size_t i = 0; i < n; ++i) {
