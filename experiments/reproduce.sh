@@ -77,6 +77,9 @@ ROBUSTNESS_ARGS=()
 step "exact vs naive on 10^5 degenerate cases -> results/exact-degenerate.md (about 4 minutes)"
 "$BIN/exact_degenerate" results 100000
 
+step "what exactness costs: exact vs naive on the paper's workload -> results/exact-speed.md (under a minute)"
+"$BIN/exact_speed" results/exact-speed.md >results/exact-speed.log 2>&1 || { tail -20 results/exact-speed.log; exit 1; }
+
 step "sweep benchmark (realistic and random workloads) -> results/sweep.md, sweep.json, sweep.svg"
 SWEEP_ARGS=()
 [[ "${GHCLIP_FULL:-0}" == 1 ]] && SWEEP_ARGS+=(--full)

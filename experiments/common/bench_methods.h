@@ -55,7 +55,7 @@ inline void runMethodOnPool(benchmark::State& state, const std::string& method, 
       benchmark::DoNotOptimize(results[k].data());
     }
   }
-  double intersections = 0, outputVertices = 0, wrong = 0, filterFailures = 0, pairs = 0;
+  double intersections = 0, outputVertices = 0, wrong = 0, filterFailures = 0, pairs = 0, constructions = 0;
   const std::size_t checked = std::min<std::size_t>(i, pool.size());
   // Answers are deterministic: check them in the first repetition only (the others would
   // recheck the same answers), and remember the verdict for the later ones.
@@ -66,6 +66,7 @@ inline void runMethodOnPool(benchmark::State& state, const std::string& method, 
   for (std::size_t k = 0; k < checked; ++k) {
     intersections += static_cast<double>(stats[k].intersections);
     filterFailures += static_cast<double>(stats[k].filterFailures);
+    constructions += static_cast<double>(stats[k].exactConstructions);
     pairs += static_cast<double>(stats[k].candidatePairs);
     outputVertices += static_cast<double>(vertexCount(results[k]));
     if (!checkNow) continue;
@@ -89,6 +90,7 @@ inline void runMethodOnPool(benchmark::State& state, const std::string& method, 
   if (!peers::findPeer(method)) {
     state.counters["intersections"] = intersections / m;
     state.counters["filter_failures"] = filterFailures / m;
+    state.counters["exact_constructions"] = constructions / m;
     state.counters["candidate_pairs"] = pairs / m;
   }
   state.counters["output_vertices"] = outputVertices / m;
