@@ -2,7 +2,6 @@
 
 #include <gmpxx.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -79,10 +78,10 @@ double nearestDouble(const mpq_class& v) {
   } else {
     d = v.get_d();
   }
-  double best = d;
+  double best = d, below, above;
   mpq_class bestError = abs(v - mpq_class(d));
-  for (double c : {std::nextafter(d, -std::numeric_limits<double>::infinity()),
-                   std::nextafter(d, std::numeric_limits<double>::infinity())}) {
+  neighbours(d, below, above);
+  for (double c : {below, above}) {
     if (!std::isfinite(c)) continue;
     const mpq_class error = abs(v - mpq_class(c));
     if (error < bestError) best = c, bestError = error;
@@ -129,7 +128,8 @@ bool alongSegment(Point a1, Point a2, Point b1, Point b2, Point& out) {
 Point constructCrossing(Point p1, Point p2, Point q1, Point q2) {
   Point out;
   // Along p first; along q when p cannot certify (a coordinate much nearer 0 than p's extent in
-  // it, e.g. the crossing of a long slanted edge with an axis).
+  // it, e.g. the crossing of a long slanted edge with an axis, is interpolated exactly along an
+  // axis-parallel q).
   if (kWideHasRange && (alongSegment(p1, p2, q1, q2, out) || alongSegment(q1, q2, p1, p2, out))) return out;
   return exactCrossing(p1, p2, q1, q2);
 }

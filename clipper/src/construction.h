@@ -12,7 +12,7 @@ namespace gh::detail {
 
 // The crossing of segments p1p2 and q1q2, which must cross at a single point that is interior to
 // both or an endpoint of one (the caller has decided this exactly).
-//   1. Interpolated along p (then along q) from the nearer endpoint in long double (64-bit
+//   1. Interpolated along p (then along q) from its first endpoint in long double (64-bit
 //      significand, 15-bit exponent where the platform has it): no product of doubles under- or
 //      overflows there, and a forward error bound certifies the rounding to double of most points.
 //   2. Otherwise the exact rational crossing, rounded to the nearest double (GMP).

@@ -90,6 +90,7 @@ int ExactArithmetic::exactlyAlongClip(const Crossing& a, const Crossing& b, cons
   return sos::compareAlongClip(clip.from(e), clip.to(e), subject.from(a.subjectEdge), subject.to(a.subjectEdge),
                                subject.from(b.subjectEdge), subject.to(b.subjectEdge));
 }
+
 bool ExactArithmetic::subjectVertexInsideClip(const Operand& subject, std::uint32_t v, const Operand& clip) const {
   return sos::subjectPointInsideClip(subject.vertices[v], clip.vertices.data(), clip.next.data(), clip.size());
 }
