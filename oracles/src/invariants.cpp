@@ -30,38 +30,15 @@ double measurementError(const Region& a, const Region& b, const Region& c) {
   return 16 * 0x1p-53 * edges * (maxX - minX) * maxY + 16 * edges * edges * std::numeric_limits<double>::denorm_min();
 }
 
-}  // namespace
-
-std::vector<std::string> invariantViolations(const Region& subject, const Region& clip, Op op,
-                                             const Region& result) {
-  std::vector<std::string> out;
-  for (std::size_t r = 0; r < result.size(); ++r) {
-    const Ring& ring = result[r];
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y)) {
-        out.push_back("ring " + std::to_string(r + 1) + " has a non-finite coordinate");
-        return out;  // areas are meaningless now
-      }
-      if (ring[i] == ring[(i + 1) % ring.size()]) {
-        out.push_back("ring " + std::to_string(r + 1) + " has a zero-length edge");
-      }
-    }
-  }
-  // Areas are measured on a copy at a comfortable scale (judging_scale.h): at subnormal or
-  // 1e300 magnitudes the floating-point measurement itself would under- or overflow.
-  const int k = judgingExponent(subject, clip, result);
-  const Region s = k ? scaledBy(subject, k) : Region{}, c = k ? scaledBy(clip, k) : Region{},
-               rs = k ? scaledBy(result, k) : Region{};
-  const Region& S = k ? s : subject;
-  const Region& C = k ? c : clip;
-  const Region& R = k ? rs : result;
+// The area inequalities of op, on a problem at a comfortable scale; displacement is the original
+// problem's rounding resolution at this scale.
+void areaViolations(const Region& S, const Region& C, Op op, const Region& R, double displacement,
+                    std::vector<std::string>& out) {
   const double a = evenOddArea(S), b = evenOddArea(C), r = evenOddArea(R);
   // Slack: the rounding tolerance (with the original's resolution), the measurement's own error
   // (each slab trapezoid is measured with a few roundings of heights up to the largest |y|, and
   // results below the normal range lose absolute precision), and a relative 1e-9 of the areas.
-  const double tolerance =
-      roundingTolerance(S, C, R, std::ldexp(constructionDisplacement(subject, clip, result), k));
-  const double slack = tolerance + measurementError(S, C, R) + 1e-9 * (a + b + r);
+  const double slack = roundingTolerance(S, C, R, displacement) + measurementError(S, C, R) + 1e-9 * (a + b + r);
   auto require = [&](bool ok, const char* what) {
     if (ok) return;
     std::ostringstream s;
@@ -89,6 +66,34 @@ std::vector<std::string> invariantViolations(const Region& subject, const Region
       require(r <= a + b + slack, "xor larger than the sum of the operands");
       require(r + slack >= std::abs(a - b), "xor smaller than |area(S) - area(C)|");
       break;
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> invariantViolations(const Region& subject, const Region& clip, Op op,
+                                             const Region& result) {
+  std::vector<std::string> out;
+  for (std::size_t r = 0; r < result.size(); ++r) {
+    const Ring& ring = result[r];
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y)) {
+        out.push_back("ring " + std::to_string(r + 1) + " has a non-finite coordinate");
+        return out;  // areas are meaningless now
+      }
+      if (ring[i] == ring[(i + 1) % ring.size()]) {
+        out.push_back("ring " + std::to_string(r + 1) + " has a zero-length edge");
+      }
+    }
+  }
+  // Areas are measured on a copy at a comfortable scale (judging_scale.h): at subnormal or
+  // 1e300 magnitudes the floating-point measurement itself would under- or overflow.
+  const double displacement = constructionDisplacement(subject, clip, result);
+  const int k = judgingExponent(subject, clip, result);
+  if (k == 0) {
+    areaViolations(subject, clip, op, result, displacement, out);
+  } else {
+    areaViolations(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), std::ldexp(displacement, k), out);
   }
   return out;
 }

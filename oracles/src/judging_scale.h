@@ -11,6 +11,9 @@
 
 namespace gh::oracle {
 
+// M: the largest |coordinate| of the three regions (0 when they are empty).
+double largestMagnitude(const Region& a, const Region& b, const Region& c);
+
 // k such that 2^k * M lies in [1, 2); 0 when M is already moderate or when some coordinate would
 // not survive the scaling exactly (the problem then spans more than the double range).
 int judgingExponent(const Region& a, const Region& b, const Region& c);

@@ -1,9 +1,10 @@
 #include "ghoracle/tolerance.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <unordered_set>
+
+#include "judging_scale.h"
 
 namespace gh::oracle {
 namespace {
@@ -22,13 +23,7 @@ double ulpOf(double m) {
 }  // namespace
 
 double constructionDisplacement(const Region& subject, const Region& clip, const Region& result) {
-  double m = 0;
-  for (const Region* r : {&subject, &clip, &result}) {
-    for (const Ring& ring : *r) {
-      for (const Point& p : ring) m = std::max({m, std::abs(p.x), std::abs(p.y)});
-    }
-  }
-  return kConstructionUlps * ulpOf(m) * std::sqrt(2.0);
+  return kConstructionUlps * ulpOf(largestMagnitude(subject, clip, result)) * std::sqrt(2.0);
 }
 
 double roundingTolerance(const Region& subject, const Region& clip, const Region& result, double displacement) {
