@@ -15,13 +15,6 @@ using namespace gh::experiments;
 
 namespace {
 
-std::string ms(double v) {
-  std::ostringstream s;
-  s.precision(v < 1 ? 3 : 4);
-  s << v;
-  return s.str();
-}
-
 const char* kMethods[] = {"sweep", "exact", "naive", "clipper6", "geos", "boost", "cgal"};
 const char* kLabels[] = {"GH sweep", "GH exact", "GH naive", "Clipper 6.4.2 (Vatti)", "GEOS 3.11", "Boost.Geometry 1.74", "CGAL 5.5"};
 
@@ -51,12 +44,7 @@ int run(int argc, char** argv) {
       for (const auto& [n, row] : it->second) sizes[n] = true;
     }
   }
-  auto row = [&](const std::string& family, long n) -> const BenchRow* {
-    const auto it = f.rows.find(family);
-    if (it == f.rows.end()) return nullptr;
-    const auto jt = it->second.find(n);
-    return jt == it->second.end() ? nullptr : &jt->second;
-  };
+  auto row = [&f](const std::string& family, long n) { return findRow(f, family, n); };
   for (const auto& [n, unused] : sizes) {
     md << "| " << n << " |";
     double fastestPeer = 0;
@@ -67,16 +55,15 @@ int run(int argc, char** argv) {
         md << " – |";
         continue;
       }
-      md << " " << ms(r->medianMs);
-      if (r->repetitions > 1) md << " [" << ms(r->minMs) << "–" << ms(r->maxMs) << "]";
+      md << " " << timeRange(*r);
       if (r->counters.count("wrong") && r->counters.at("wrong") > 0) md << " **wrong**";
       md << " |";
       if (i >= 3 && (fastestPeer == 0 || r->medianMs < fastestPeer)) fastestPeer = r->medianMs, fastestName = kLabels[i];
     }
     const BenchRow* s = row("circles/sweep", n);
     const BenchRow* nv = row("circles/naive", n);
-    md << " " << (s && fastestPeer > 0 ? ms(fastestPeer / s->medianMs) + "x faster than " + fastestName : "–") << " |";
-    md << " " << (s && nv ? ms(nv->medianMs / s->medianMs) + "x" : "–") << " |\n";
+    md << " " << (s && fastestPeer > 0 ? reportNumber(fastestPeer / s->medianMs) + "x faster than " + fastestName : "–") << " |";
+    md << " " << (s && nv ? reportNumber(nv->medianMs / s->medianMs) + "x" : "–") << " |\n";
   }
   md << "\nComplexity fitted by Google Benchmark (time ≈ coefficient × f(n), f the best of its "
         "candidates; RMS is the relative misfit):\n\n| method | fit | coefficient | RMS |\n|---|---|---|---|\n";
@@ -84,7 +71,7 @@ int run(int argc, char** argv) {
     const auto it = f.fits.find(std::string("circles/") + kMethods[i]);
     if (it == f.fits.end()) continue;
     md << "| " << kLabels[i] << " | O(" << it->second.bigO << ") | " << it->second.coefficient << " | "
-       << ms(100 * it->second.rms) << " % |\n";
+       << reportNumber(100 * it->second.rms) << " % |\n";
   }
   md << "\n![time against n, log-log](" << plotBase.substr(plotBase.find_last_of('/') + 1) << ".svg)\n\n"
      << "## The paper's random workload (P ≈ n·m candidate pairs)\n\n"
@@ -104,9 +91,9 @@ int run(int argc, char** argv) {
     if (!nv || !s || !e || !ea) continue;
     const double pairs = e->counters.count("candidate_pairs") ? e->counters.at("candidate_pairs") : 0;
     const double ff = e->counters.count("filter_failures") ? e->counters.at("filter_failures") : 0;
-    md << "| " << n << " | " << ms(nv->medianMs) << " | " << ms(s->medianMs) << " | " << ms(s->medianMs / nv->medianMs)
-       << " | " << ms(e->medianMs) << " | " << ms(e->medianMs / nv->medianMs) << " | " << ms(ea->medianMs) << " | "
-       << ms(ea->medianMs / nv->medianMs) << " | " << nv->counters.at("intersections") << " | " << (pairs > 0 ? ff / pairs : 0.0) << " |\n";
+    md << "| " << n << " | " << reportNumber(nv->medianMs) << " | " << reportNumber(s->medianMs) << " | " << reportNumber(s->medianMs / nv->medianMs)
+       << " | " << reportNumber(e->medianMs) << " | " << reportNumber(e->medianMs / nv->medianMs) << " | " << reportNumber(ea->medianMs) << " | "
+       << reportNumber(ea->medianMs / nv->medianMs) << " | " << nv->counters.at("intersections") << " | " << (pairs > 0 ? ff / pairs : 0.0) << " |\n";
   }
   gh::io::writeText(argv[2], md.str());
 

@@ -16,33 +16,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(v < 1 ? 3 : 4);
-  s << v;
-  return s.str();
-}
-
-const BenchRow* find(const BenchFile& f, const std::string& family, long n) {
-  const auto it = f.rows.find(family);
-  if (it == f.rows.end()) return nullptr;
-  const auto jt = it->second.find(n);
-  return jt == it->second.end() ? nullptr : &jt->second;
-}
-
 // "12.3 [11.9–13.0]" and a mark when an answer was wrong.
 std::string cell(const BenchRow* r) {
   if (!r) return "–";
-  std::string s = num(r->medianMs);
-  if (r->repetitions > 1) s += " [" + num(r->minMs) + "–" + num(r->maxMs) + "]";
+  std::string s = timeRange(*r);
   if (r->counters.count("wrong") && r->counters.at("wrong") > 0) {
-    s += " **wrong " + num(r->counters.at("wrong")) + "/" + num(r->counters.at("checked")) + "**";
+    s += " **wrong " + reportNumber(r->counters.at("wrong")) + "/" + reportNumber(r->counters.at("checked")) + "**";
   }
   return s;
-}
-
-double counter(const BenchRow* r, const char* name) {
-  return r && r->counters.count(name) ? r->counters.at(name) : 0;
 }
 
 std::string header(const BenchFile& f, int argc, char** argv, const std::string& title) {
@@ -83,15 +64,15 @@ int run(int argc, char** argv) {
     for (const auto& [n, r] : f.rows.at(ti + "naive")) sizes.push_back(n);
   }
   for (long n : sizes) {
-    const BenchRow* v = find(f, ti + "clipper6", n);
-    const BenchRow* nv = find(f, ti + "naive", n);
-    const BenchRow* ex = find(f, ti + "exact", n);
-    const double pairs = counter(ex, "candidate_pairs");
+    const BenchRow* v = findRow(f, ti + "clipper6", n);
+    const BenchRow* nv = findRow(f, ti + "naive", n);
+    const BenchRow* ex = findRow(f, ti + "exact", n);
+    const double pairs = counterOf(ex, "candidate_pairs");
     t1 << "| " << n << " | " << cell(v) << " | " << cell(nv) << " | "
-       << (v && nv ? num(v->medianMs / nv->medianMs) : "–") << " | " << cell(find(f, ti + "sweep", n)) << " | "
-       << cell(ex) << " | " << (ex && nv ? num(ex->medianMs / nv->medianMs) : "–") << " | "
-       << (pairs > 0 ? num(counter(ex, "filter_failures") / pairs) : "–") << " | "
-       << num(counter(nv, "intersections")) << " | "
+       << (v && nv ? reportNumber(v->medianMs / nv->medianMs) : "–") << " | " << cell(findRow(f, ti + "sweep", n)) << " | "
+       << cell(ex) << " | " << (ex && nv ? reportNumber(ex->medianMs / nv->medianMs) : "–") << " | "
+       << (pairs > 0 ? reportNumber(counterOf(ex, "filter_failures") / pairs) : "–") << " | "
+       << reportNumber(counterOf(nv, "intersections")) << " | "
        << (v ? std::to_string(v->iterations) : "–") << " / " << (nv ? std::to_string(nv->iterations) : "–") << " |\n";
   }
   t1 << "\n### Every operation: improvement of GH naive over Vatti (Vatti time / naive time)\n\n| n |";
@@ -101,9 +82,9 @@ int run(int argc, char** argv) {
     t1 << "| " << n << " |";
     for (gh::Op op : gh::kAllOps) {
       const std::string fam = "t1-random-" + std::string(gh::name(op)) + "/";
-      const BenchRow* v = find(f, fam + "clipper6", n);
-      const BenchRow* nv = find(f, fam + "naive", n);
-      t1 << " " << (v && nv ? num(v->medianMs / nv->medianMs) : "–") << " |";
+      const BenchRow* v = findRow(f, fam + "clipper6", n);
+      const BenchRow* nv = findRow(f, fam + "naive", n);
+      t1 << " " << (v && nv ? reportNumber(v->medianMs / nv->medianMs) : "–") << " |";
     }
     t1 << "\n";
   }
@@ -158,8 +139,8 @@ int run(int argc, char** argv) {
       }
       for (long n : ns) {
         t2 << "| " << n << " |";
-        for (const char* m : all) t2 << " " << cell(find(f, prefix + m, n)) << " |";
-        t2 << " " << num(counter(find(f, prefix + "exact", n), "output_vertices")) << " |\n";
+        for (const char* m : all) t2 << " " << cell(findRow(f, prefix + m, n)) << " |";
+        t2 << " " << reportNumber(counterOf(findRow(f, prefix + "exact", n), "output_vertices")) << " |\n";
       }
     }
   }

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "common/isolated_run.h"
+#include "common/judge.h"
 #include "common/provenance.h"
 #include "ghclip/measure.h"
 #include "ghio/formats.h"
@@ -129,11 +130,12 @@ std::string percent(int part, int whole) {
 
 Verdict judgeAnswer(const Region& s, const Region& c, Op op, const Region& r, double& relative, std::string& message) {
   try {
-    const auto v = oracle::exactCheck(s, c, op, r, {false, false, true});
-    relative = v.relativeError();
-    if (v.errorAreaExact == "0") return Verdict::Exact;
-    if (v.pass) return Verdict::Rounding;
-    return relative > 1e-6 ? Verdict::Gross : Verdict::Beyond;
+    switch (experiments::judgeAnswer(s, c, op, r, relative)) {
+      case Outcome::Exact: return Verdict::Exact;
+      case Outcome::Rounding: return Verdict::Rounding;
+      case Outcome::BeyondRounding: return Verdict::Beyond;
+      default: return Verdict::Gross;
+    }
   } catch (const std::exception& e) {
     // An answer the oracle cannot even read (non-finite coordinates) is as wrong as it gets.
     relative = std::numeric_limits<double>::infinity();

@@ -18,22 +18,11 @@ using namespace gh;
 
 namespace {
 
-constexpr std::size_t kPool = 16;
-
-const std::vector<work::Workload>& pool(const std::string& name, std::size_t n) {
-  static std::map<std::pair<std::string, std::size_t>, std::vector<work::Workload>> cache;
-  auto& p = cache[{name, n}];
-  if (p.empty()) {
-    for (std::size_t k = 0; k < kPool; ++k) p.push_back(work::generate(name, n, 1000 + k));
-  }
-  return p;
-}
-
 void add(const std::string& table, const std::string& workload, const std::string& method, Op op,
          const std::vector<long>& sizes) {
   const std::string family = table + "-" + workload + "-" + std::string(name(op)) + "/" + method;
   auto* b = benchmark::RegisterBenchmark(family.c_str(), [workload, method, op](benchmark::State& s) {
-    experiments::runMethodOnPool(s, method, pool(workload, static_cast<std::size_t>(s.range(0))), op);
+    experiments::runMethodOnPool(s, method, experiments::seededPool(workload, static_cast<std::size_t>(s.range(0))), op);
   });
   for (long n : sizes) b->Arg(n);
   b->Unit(benchmark::kMillisecond)->MinTime(0.2);

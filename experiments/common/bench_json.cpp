@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 
 namespace gh::experiments {
@@ -79,6 +80,30 @@ BenchFile readBenchJson(const std::string& path) {
     }
   }
   return out;
+}
+
+const BenchRow* findRow(const BenchFile& f, const std::string& family, long n) {
+  const auto it = f.rows.find(family);
+  if (it == f.rows.end()) return nullptr;
+  const auto jt = it->second.find(n);
+  return jt == it->second.end() ? nullptr : &jt->second;
+}
+
+double counterOf(const BenchRow* r, const std::string& name) {
+  return r && r->counters.count(name) ? r->counters.at(name) : 0;
+}
+
+std::string reportNumber(double v) {
+  std::ostringstream s;
+  s.precision(v < 1 ? 3 : 4);
+  s << v;
+  return s.str();
+}
+
+std::string timeRange(const BenchRow& r, double scale) {
+  std::string s = reportNumber(r.medianMs * scale);
+  if (r.repetitions > 1) s += " [" + reportNumber(r.minMs * scale) + "–" + reportNumber(r.maxMs * scale) + "]";
+  return s;
 }
 
 }  // namespace gh::experiments

@@ -32,4 +32,16 @@ struct BenchFile {
 // Throws std::runtime_error on unreadable JSON.
 BenchFile readBenchJson(const std::string& path);
 
+// The row of `family` at n, or nullptr.
+const BenchRow* findRow(const BenchFile& f, const std::string& family, long n);
+
+// A counter of a row (0 when the row or the counter is missing).
+double counterOf(const BenchRow* r, const std::string& name);
+
+// How the reports print numbers: 3 significant digits below 1, else 4.
+std::string reportNumber(double v);
+
+// "median [min–max]" of a row's times in ms times `scale` (the range only with repetitions).
+std::string timeRange(const BenchRow& r, double scale = 1);
+
 }  // namespace gh::experiments

@@ -22,6 +22,18 @@
 
 namespace gh::experiments {
 
+// The pool of a timing table: kPoolSize seeded pairs of a workload (seeds 1000, 1001, ...), made
+// once per (workload, n) and shared by every program that times on it, so their cells compare.
+inline constexpr std::size_t kPoolSize = 16;
+inline const std::vector<work::Workload>& seededPool(const std::string& workload, std::size_t n) {
+  static std::map<std::pair<std::string, std::size_t>, std::vector<work::Workload>> cache;
+  auto& p = cache[{workload, n}];
+  if (p.empty()) {
+    for (std::size_t k = 0; k < kPoolSize; ++k) p.push_back(work::generate(workload, n, 1000 + k));
+  }
+  return p;
+}
+
 // Our variants by name ("naive", "sweep", "exact"; "exact-allpairs" forces all pairs) or a peer
 // ("clipper6", ...), on a pool of workloads: iteration i clips pool[i % size], as the paper
 // averaged over fresh random polygons. Every answer of the last round through the pool is

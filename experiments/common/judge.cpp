@@ -18,16 +18,16 @@ Judged judge(const Method& m, const Region& subject, const Region& clip, Op op) 
     j.message = e.what();
     return j;
   }
-  const auto v = oracle::exactCheck(subject, clip, op, j.result, {false, false, true});
-  j.relativeError = v.relativeError();
-  if (v.errorAreaExact == "0") {
-    j.outcome = Outcome::Exact;
-  } else if (v.pass) {
-    j.outcome = Outcome::Rounding;
-  } else {
-    j.outcome = j.relativeError > 1e-6 ? Outcome::Gross : Outcome::BeyondRounding;
-  }
+  j.outcome = judgeAnswer(subject, clip, op, j.result, j.relativeError);
   return j;
+}
+
+Outcome judgeAnswer(const Region& subject, const Region& clip, Op op, const Region& result, double& relativeError) {
+  const auto v = oracle::exactCheck(subject, clip, op, result, {false, false, true});
+  relativeError = v.relativeError();
+  if (v.errorAreaExact == "0") return Outcome::Exact;
+  if (v.pass) return Outcome::Rounding;
+  return relativeError > 1e-6 ? Outcome::Gross : Outcome::BeyondRounding;
 }
 
 }  // namespace gh::experiments

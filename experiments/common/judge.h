@@ -17,4 +17,8 @@ struct Judged {
 
 Judged judge(const Method& m, const Region& subject, const Region& clip, Op op);
 
+// The outcome of an answer R to op(S, C) by the exact oracle (Exact, Rounding, BeyondRounding or
+// Gross), and its relative error area. Throws what exactCheck throws (unreadable answers).
+Outcome judgeAnswer(const Region& subject, const Region& clip, Op op, const Region& result, double& relativeError);
+
 }  // namespace gh::experiments
