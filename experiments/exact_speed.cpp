@@ -17,6 +17,7 @@
 #include "common/bench_methods.h"
 #include "common/provenance.h"
 #include "ghio/formats.h"
+#include "tool_main.h"
 
 using namespace gh;
 using namespace gh::experiments;
@@ -29,10 +30,9 @@ const char* const kMethods[] = {"naive", "exact"};
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
-    std::cerr << "exact_speed: usage: exact_speed OUT.md [google benchmark flags]\n";
-    return 2;
+    return tools::usageError("exact_speed", "usage: exact_speed OUT.md [google benchmark flags]");
   }
   const std::string out = argv[1];
   const std::string json = std::filesystem::path(out).replace_extension(".json").string();
@@ -44,14 +44,20 @@ int main(int argc, char** argv) {
     b->Unit(benchmark::kMicrosecond)->MinTime(0.2)->Repetitions(kRepetitions);
   }
   std::vector<char*> args{argv[0]};
-  for (int i = 2; i < argc; ++i) args.push_back(argv[i]);
+  bool listing = false;
+  for (int i = 2; i < argc; ++i) {
+    args.push_back(argv[i]);
+    listing = listing || std::string(argv[i]).rfind("--benchmark_list_tests", 0) == 0;
+  }
   std::string interleave = "--benchmark_enable_random_interleaving=true", outFlag = "--benchmark_out=" + json,
               formatFlag = "--benchmark_out_format=json";
   for (std::string* flag : {&interleave, &outFlag, &formatFlag}) args.push_back(flag->data());
   int n = static_cast<int>(args.size());
   benchmark::Initialize(&n, args.data());
-  benchmark::RunSpecifiedBenchmarks();
+  const std::size_t ran = benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
+  if (listing) return 0;
+  if (ran == 0) throw tools::BadInput("no benchmark matched the --benchmark_filter given");
   const BenchFile f = readBenchJson(json);
 
   std::ostringstream md;
@@ -79,3 +85,5 @@ int main(int argc, char** argv) {
   std::cout << "wrote " << out << "\n";
   return 0;
 }
+
+int main(int argc, char** argv) { return tools::guardedMain("exact_speed", argc, argv, run); }

@@ -77,5 +77,14 @@ check "the exact answer passes" test $? -eq 0
 "$BIN/ghclip" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" --check exact >/dev/null 2>"$TMP/chk.err"
 check "ghclip --check exact passes" test $? -eq 0
 
+# The report generators refuse JSON that is not Google Benchmark's: exit 2, one line, no table.
+printf '{"context": {}, "benchmarks": [' >"$TMP/cut.json"
+mkdir -p "$TMP/tables"
+"$BIN/report_tables" "$TMP/cut.json" "$TMP/tables" 2>"$TMP/rt.err"
+check "report_tables on cut JSON: exit 2" test $? -eq 2
+check "report_tables on cut JSON: one line naming the file" \
+  test "$(wc -l <"$TMP/rt.err")" -eq 1 -a -n "$(grep cut.json "$TMP/rt.err")"
+check "report_tables on cut JSON: no table" test ! -e "$TMP/tables/table1.md"
+
 echo "$passes passed, $fails failed"
 test "$fails" -eq 0

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "tool_main.h"
+
 namespace gh::experiments {
 
 namespace {
@@ -18,11 +20,25 @@ double toMs(double t, const std::string& unit) {
   return t;
 }
 
+BenchFile readBenchJsonOrThrow(const std::string& path);
+
 }  // namespace
 
 BenchFile readBenchJson(const std::string& path) {
+  try {
+    return readBenchJsonOrThrow(path);
+  } catch (const tools::BadInput&) {
+    throw;
+  } catch (const std::exception& e) {  // nlohmann's parse and type errors, a name without "/<n>"
+    throw tools::BadInput(path + ": not Google Benchmark JSON: " + e.what());
+  }
+}
+
+namespace {
+
+BenchFile readBenchJsonOrThrow(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open");
+  if (!in) throw tools::BadInput(path + ": cannot open");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   // Google Benchmark writes bare NaN / inf for undefined statistics (e.g. the coefficient of
   // variation of a constant counter); JSON has no such literals, so they become null.
@@ -79,8 +95,11 @@ BenchFile readBenchJson(const std::string& path) {
       row.medianMs = ts.size() % 2 ? ts[ts.size() / 2] : (ts[ts.size() / 2 - 1] + ts[ts.size() / 2]) / 2;
     }
   }
+  if (out.rows.empty() && out.fits.empty()) throw tools::BadInput(path + ": holds no benchmark results");
   return out;
 }
+
+}  // namespace
 
 const BenchRow* findRow(const BenchFile& f, const std::string& family, long n) {
   const auto it = f.rows.find(family);

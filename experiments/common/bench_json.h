@@ -29,7 +29,8 @@ struct BenchFile {
   std::map<std::string, std::string> context;            // host, date, cpu info
 };
 
-// Throws std::runtime_error on unreadable JSON.
+// Throws tools::BadInput naming the file when it is missing, is not Google Benchmark JSON or
+// holds no results (e.g. a --benchmark_filter that matched nothing).
 BenchFile readBenchJson(const std::string& path);
 
 // The row of `family` at n, or nullptr.
