@@ -71,6 +71,37 @@ RC_GTEST_PROP(Construction, CrossingsOfNearlyParallelSegmentsAreFaithfullyRounde
   RC_ASSERT(problem == "");
 }
 
+// Every coordinate at its own magnitude (2^-60..2^60): the determinants' terms and the
+// interpolation's terms differ widely, which is where a wrong error bound would show.
+RC_GTEST_PROP(Construction, CrossingsOfMixedMagnitudesAreFaithfullyRounded, ()) {
+  const auto coord = rc::gen::mapcat(rc::gen::inRange(-60, 61), [](int e) { return scaledInteger(e - 20); });
+  const Point p1{*coord, *coord}, p2{*coord, *coord}, q1{*coord, *coord}, q2{*coord, *coord};
+  RC_PRE(properlyCross(p1, p2, q1, q2));
+  const std::string problem = check(p1, p2, q1, q2);
+  RC_ASSERT(problem == "");
+}
+
+// The properties above test the certified fast path only if it decides most points: on random
+// crossings in the unit square it must (about 1 in 10^4 needs rationals), or they would test GMP.
+TEST(Construction, CertifiedPathDecidesRandomCrossings) {
+  std::uint64_t state = 20261122;
+  auto unit = [&state] {  // splitmix64, so that the cases do not depend on the library's engines
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111eb;
+    return std::ldexp(static_cast<double>((z ^ (z >> 31)) >> 11), -53);
+  };
+  const std::uint64_t before = detail::exactConstructions();
+  int crossings = 0;
+  while (crossings < 10000) {
+    const Point p1{unit(), unit()}, p2{unit(), unit()}, q1{unit(), unit()}, q2{unit(), unit()};
+    if (!properlyCross(p1, p2, q1, q2)) continue;
+    ++crossings;
+    ASSERT_EQ(check(p1, p2, q1, q2), "");
+  }
+  EXPECT_LT(detail::exactConstructions() - before, 100u) << "of " << crossings << " crossings took the exact path";
+}
+
 TEST(Construction, SubnormalCrossingIsExact) {
   const double u = std::numeric_limits<double>::denorm_min();
   // (4u, 2u)-(12u, 4u) crosses x = 8u at y = 3u exactly.

@@ -16,25 +16,18 @@ std::uint64_t& exactConstructions() {
 namespace {
 
 using Wide = long double;
-constexpr Wide kU = std::numeric_limits<Wide>::epsilon() / 2;  // unit roundoff of Wide
-// The bounds below assume no product of two doubles under- or overflows in Wide: true for the
-// x87 extended format; elsewhere (long double = double) every point takes the exact path.
-constexpr bool kWideHasRange =
-    std::numeric_limits<Wide>::max_exponent >= 4096 && std::numeric_limits<Wide>::min_exponent <= -4096;
-
-// A coordinate with a bound on its error: [value - bound, value + bound] holds the exact one.
-struct Enclosure {
-  Wide value, bound;
-};
-
-// from + t * (to - from) with |t - t_exact| <= errT: value and error bound. The product and the
-// difference are rounded once each, the sum once: |error| <= errT |delta| + 2u t |delta| + u |value|
-// (to first order; the last factor covers the rest).
-Enclosure interpolate(double from, double to, Wide t, Wide errT) {
-  const Wide delta = Wide(to) - from;
-  const Wide value = from + t * delta;
-  return {value, ((errT + 2 * kU * std::abs(t)) * std::abs(delta) + kU * std::abs(value)) * (1 + 8 * kU)};
-}
+// The bounds below assume the x87 extended format: a 64-bit significand, and an exponent range in
+// which no product of two doubles under- or overflows. Elsewhere (long double = double) every
+// point takes the exact path.
+constexpr bool kWideIsExtended = std::numeric_limits<Wide>::digits >= 64 &&
+                                 std::numeric_limits<Wide>::max_exponent >= 4096 &&
+                                 std::numeric_limits<Wide>::min_exponent <= -4096;
+constexpr double kUW = 0x1p-64;  // unit roundoff of Wide (when kWideIsExtended)
+// Error bounds are computed in doubles from double-rounded terms, beside the Wide chain. Each
+// bound below is the Wide analysis' bound; this factor covers, with room to spare, what the
+// doubles lose against it: a dozen roundings of at most 2^-53 each, and products that underflow
+// (at most 2^-1075 each, negligible under the guard s >= 2^-900).
+constexpr double kSlack = 1 + 0x1p-45;
 
 // The two doubles next to a finite d (nextafter without the library call: adjacent doubles of
 // one sign have adjacent bit patterns).
@@ -53,14 +46,26 @@ void neighbours(double d, double& below, double& above) {
   else below = a, above = t;
 }
 
-// A double within one ulp of every value in the enclosure, if there is one: the enclosure then
-// lies strictly between the two neighbours of its rounded centre.
-bool certify(Enclosure e, double& out) {
-  const double d = static_cast<double>(e.value);
-  if (!std::isfinite(d)) return false;
-  double below, above;
-  neighbours(d, below, above);
-  if (!(e.value - e.bound > below && e.value + e.bound < above)) return false;
+// The distance from a normal double d to its neighbour toward zero, the nearer of its two (they
+// differ only at a power of two, where the one below is half as far). Exact: a power of two.
+double gapAround(double d) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &d, sizeof d);
+  const std::uint64_t toward = bits - 1;
+  double t;
+  std::memcpy(&t, &toward, sizeof t);
+  return std::abs(d - t);
+}
+
+// Is d = double(v) a faithful rounding of every value in [v - bound, v + bound]? It is when the
+// interval lies strictly between d's two neighbours: |v - d| + bound < gapAround(d). v - d is
+// exact in Wide (the bits of v below d's last place) and in double (at most 11 bits, and no
+// smaller than 2^-1023 when |d| >= 2^-960).
+bool certify(Wide v, double bound, double& out) {
+  const double d = static_cast<double>(v);
+  const double r = static_cast<double>(v - Wide(d));
+  if (!(std::abs(d) >= 0x1p-960 && std::abs(d) <= 0x1p1000)) return false;  // also NaN
+  if (!((std::abs(r) + bound) * kSlack < gapAround(d))) return false;
   out = d;
   return true;
 }
@@ -102,25 +107,37 @@ Point exactCrossing(Point p1, Point p2, Point q1, Point q2) {
 }
 
 // The crossing interpolated along a1a2 (b1b2 the other segment), if both coordinates certify.
-// The determinants w1, w2 of a1 and a2 against line b1b2 (opposite signs) share one stage-A
-// bound e in Wide, (3 + 16u) u (|l1| + |r1| + |l2| + |r2|); t = w1 / (w1 - w2) with
-// |t - T| <= (e + t e_d) / (|d| - e_d), where 1 / (|d| - e_d) is taken as 2 / |d| (loose by at
-// most 2, which the 11 extra bits of Wide absorb; it saves a division). No branch depends on the
-// data until the certificate: they would be mispredicted half the time.
+// In Wide: the determinants w1, w2 of a1 and a2 against line b1b2 (opposite signs), d = w1 - w2,
+// t = w1 / d, and a1 + t (a2 - a1). Their error bounds, in doubles:
+//   |w - W| <= e = (3 + 16u) u S for both, S the sum of the four products' magnitudes
+//     (Shewchuk's stage-A bound, u = 2^-64);
+//   |d - D| <= ed = 2e + u |d|, and with ed <= |d| / 2,
+//   |t - T| <= errT = 2 (e + |t| ed) / |d| + 2u |t|  (|w1/d - T| <= (e + |w1/d| ed) / (|d| - ed));
+//   |x - X| <= (errT + 2u |t|) |a2 - a1| + u |x|    (the difference, product and sum rounded).
+// The Wide chain has no branch and few operations (x87 instructions are the cost here); the
+// bounds run beside it on the SSE units.
 bool alongSegment(Point a1, Point a2, Point b1, Point b2, Point& out) {
-  constexpr Wide kDet = (3 + 16 * kU) * kU;
+  const double bxd = b2.x - b1.x, byd = b2.y - b1.y;
+  const double s = std::abs(bxd * (a1.y - b1.y)) + std::abs(byd * (a1.x - b1.x)) +
+                   std::abs(bxd * (a2.y - b1.y)) + std::abs(byd * (a2.x - b1.x));
+  const double e = (3 + 0x1p-40) * kUW * s * kSlack;
+
   const Wide bx = Wide(b2.x) - b1.x, by = Wide(b2.y) - b1.y;
-  const Wide l1 = bx * (Wide(a1.y) - b1.y), r1 = by * (Wide(a1.x) - b1.x);
-  const Wide l2 = bx * (Wide(a2.y) - b1.y), r2 = by * (Wide(a2.x) - b1.x);
-  const Wide w1 = l1 - r1, w2 = l2 - r2;
-  const Wide e = kDet * (std::abs(l1) + std::abs(r1) + std::abs(l2) + std::abs(r2));
-  const Wide d = w1 - w2, ad = std::abs(d);
-  const Wide ed = 2 * e + kU * ad;
-  const Wide inverse = 1 / d;
-  const Wide t = w1 * inverse;
-  const Wide err = ((e + std::abs(t) * ed) * 2 * std::abs(inverse) + 2 * kU * std::abs(t)) * (1 + 8 * kU);
-  if (!(2 * ed <= ad) || !(err < 1)) return false;  // also NaN
-  return certify(interpolate(a1.x, a2.x, t, err), out.x) && certify(interpolate(a1.y, a2.y, t, err), out.y);
+  const Wide w1 = bx * (Wide(a1.y) - b1.y) - by * (Wide(a1.x) - b1.x);
+  const Wide w2 = bx * (Wide(a2.y) - b1.y) - by * (Wide(a2.x) - b1.x);
+  const Wide d = w1 - w2;
+  const Wide t = w1 / d;
+
+  const double ad = std::abs(static_cast<double>(d)), at = std::abs(static_cast<double>(t));
+  const double ed = (2 * e + kUW * ad) * kSlack;
+  const double errT = (2 * (e + at * ed) / ad + 2 * kUW * at) * kSlack * kSlack;
+  if (!(s >= 0x1p-900 && s <= 0x1p1010) || !(2 * ed * kSlack <= ad) || !(errT < 1)) return false;  // also NaN
+
+  const Wide x = a1.x + t * (Wide(a2.x) - a1.x), y = a1.y + t * (Wide(a2.y) - a1.y);
+  const double errStep = errT + 2 * kUW * at;
+  const double boundX = (errStep * std::abs(a2.x - a1.x) * kSlack + kUW * std::abs(static_cast<double>(x))) * kSlack;
+  const double boundY = (errStep * std::abs(a2.y - a1.y) * kSlack + kUW * std::abs(static_cast<double>(y))) * kSlack;
+  return certify(x, boundX, out.x) & certify(y, boundY, out.y);
 }
 
 }  // namespace
@@ -130,7 +147,7 @@ Point constructCrossing(Point p1, Point p2, Point q1, Point q2) {
   // Along p first; along q when p cannot certify (a coordinate much nearer 0 than p's extent in
   // it, e.g. the crossing of a long slanted edge with an axis, is interpolated exactly along an
   // axis-parallel q).
-  if (kWideHasRange && (alongSegment(p1, p2, q1, q2, out) || alongSegment(q1, q2, p1, p2, out))) return out;
+  if (kWideIsExtended && (alongSegment(p1, p2, q1, q2, out) || alongSegment(q1, q2, p1, p2, out))) return out;
   return exactCrossing(p1, p2, q1, q2);
 }
 
