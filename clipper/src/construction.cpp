@@ -2,9 +2,12 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+
+#include "error_free.h"
 
 namespace gh::detail {
 
@@ -15,25 +18,14 @@ std::uint64_t& exactConstructions() {
 
 namespace {
 
-using Wide = long double;
-// The bounds below assume the x87 extended format: a 64-bit significand, and an exponent range in
-// which no product of two doubles under- or overflows. Elsewhere (long double = double) every
-// point takes the exact path.
-constexpr bool kWideIsExtended = std::numeric_limits<Wide>::digits >= 64 &&
-                                 std::numeric_limits<Wide>::max_exponent >= 4096 &&
-                                 std::numeric_limits<Wide>::min_exponent <= -4096;
-constexpr double kUW = 0x1p-64;  // unit roundoff of Wide (when kWideIsExtended)
-// Error bounds are computed in doubles from double-rounded terms, beside the Wide chain. Each
-// bound below is the Wide analysis' bound; this factor covers, with room to spare, what the
-// doubles lose against it: a dozen roundings of at most 2^-53 each, and products that underflow
-// (at most 2^-1075 each, negligible under the guard s >= 2^-900).
-constexpr double kSlack = 1 + 0x1p-45;
+constexpr double kU2 = 0x1p-106;  // the square of double's unit roundoff u = 2^-53
 
 // The two doubles next to a finite d (nextafter without the library call: adjacent doubles of
 // one sign have adjacent bit patterns).
 void neighbours(double d, double& below, double& above) {
   if (d == 0) {
-    below = -std::numeric_limits<double>::denorm_min(), above = std::numeric_limits<double>::denorm_min();
+    below = -std::numeric_limits<double>::denorm_min(),
+    above = std::numeric_limits<double>::denorm_min();
     return;
   }
   std::uint64_t bits;
@@ -42,8 +34,10 @@ void neighbours(double d, double& below, double& above) {
   double a, t;
   std::memcpy(&a, &away, sizeof a);
   std::memcpy(&t, &toward, sizeof t);
-  if (d > 0) below = t, above = a;
-  else below = a, above = t;
+  if (d > 0)
+    below = t, above = a;
+  else
+    below = a, above = t;
 }
 
 // The distance from a normal double d to its neighbour toward zero, the nearer of its two (they
@@ -57,16 +51,13 @@ double gapAround(double d) {
   return std::abs(d - t);
 }
 
-// Is d = double(v) a faithful rounding of every value in [v - bound, v + bound]? It is when the
-// interval lies strictly between d's two neighbours: |v - d| + bound < gapAround(d). v - d is
-// exact in Wide (the bits of v below d's last place) and in double (at most 11 bits, and no
-// smaller than 2^-1023 when |d| >= 2^-960).
-bool certify(Wide v, double bound, double& out) {
-  const double d = static_cast<double>(v);
-  const double r = static_cast<double>(v - Wide(d));
-  if (!(std::abs(d) >= 0x1p-960 && std::abs(d) <= 0x1p1000)) return false;  // also NaN
-  if (!((std::abs(r) + bound) * kSlack < gapAround(d))) return false;
-  out = d;
+// Is hi a faithful rounding of every value within `bound` of hi + lo? It is when that interval
+// lies strictly between hi's two neighbours: |lo| + bound < gapAround(hi). The factor covers the
+// rounding of the left side; the normal range keeps gapAround exact.
+bool certify(TwoTerm v, double bound, double& out) {
+  if (!(std::abs(v.hi) >= 0x1p-960 && std::abs(v.hi) <= 0x1p1000)) return false;  // also NaN
+  if (!((std::abs(v.lo) + bound) * (1 + 0x1p-45) < gapAround(v.hi))) return false;
+  out = v.hi;
   return true;
 }
 
@@ -106,49 +97,120 @@ Point exactCrossing(Point p1, Point p2, Point q1, Point q2) {
   return {nearestDouble(x), nearestDouble(y)};
 }
 
+// A determinant L - R of two products of exact differences, as s + lo, and |L| + |R| rounded.
+struct Determinant {
+  double s, lo, magnitude;
+};
+
+// bx * ay - by * ax for differences given exactly as two terms each. Each product is hi * hi
+// exactly (twoProduct) plus the cross terms rounded once; lo * lo is dropped (< u^2 |hi * hi|).
+// |L - R - (s + lo)| <= 16 u^2 (|L| + |R|) and |lo| <= 4.3 u (|L| + |R|).
+inline Determinant determinant(TwoTerm bx, TwoTerm by, TwoTerm ay, TwoTerm ax) {
+  const TwoTerm l = twoProduct(bx.hi, ay.hi), r = twoProduct(by.hi, ax.hi);
+  const double lc = std::fma(bx.hi, ay.lo, bx.lo * ay.hi),
+               rc = std::fma(by.hi, ax.lo, by.lo * ax.hi);
+  const TwoTerm s = twoSum(l.hi, -r.hi);
+  return {s.hi, s.lo + ((l.lo - r.lo) + (lc - rc)), std::abs(l.hi) + std::abs(r.hi)};
+}
+
 // The crossing interpolated along a1a2 (b1b2 the other segment), if both coordinates certify.
-// In Wide: the determinants w1, w2 of a1 and a2 against line b1b2 (opposite signs), d = w1 - w2,
-// t = w1 / d, and a1 + t (a2 - a1). Their error bounds, in doubles:
-//   |w - W| <= e = (3 + 16u) u S for both, S the sum of the four products' magnitudes
-//     (Shewchuk's stage-A bound, u = 2^-64);
-//   |d - D| <= ed = 2e + u |d|, and with ed <= |d| / 2,
-//   |t - T| <= errT = 2 (e + |t| ed) / |d| + 2u |t|  (|w1/d - T| <= (e + |w1/d| ed) / (|d| - ed));
-//   |x - X| <= (errT + 2u |t|) |a2 - a1| + u |x|    (the difference, product and sum rounded).
-// The Wide chain has no branch and few operations (x87 instructions are the cost here); the
-// bounds run beside it on the SSE units.
-bool alongSegment(Point a1, Point a2, Point b1, Point b2, Point& out) {
-  const double bxd = b2.x - b1.x, byd = b2.y - b1.y;
-  const double s = std::abs(bxd * (a1.y - b1.y)) + std::abs(byd * (a1.x - b1.x)) +
-                   std::abs(bxd * (a2.y - b1.y)) + std::abs(byd * (a2.x - b1.x));
-  const double e = (3 + 0x1p-40) * kUW * s * kSlack;
+// Double-double arithmetic: the differences exactly (twoDiff), the determinants w1 = s1 + lo1
+// and w2 of a1 and a2 against line b1b2 (opposite signs), their difference d = ds + dl, the
+// parameter t = th + tl = w1 / d (one division and a correction), and a1 + t (a2 - a1) as
+// hi + lo. With S = the four products' magnitudes and k = S / |ds| (the condition: k is large
+// for nearly parallel segments), while 2^-800 <= S <= 2^1010 and k <= 2^40 (nothing under- or
+// overflows to matter; |d| >= |ds| / 2):
+//   |w - W| <= 16 u^2 S,  |d - D| <= u^2 (25 S + |ds|),
+//   |t - T| <= errT = 2^12 u^2 (1 + |th|) (1 + k)^2   (2^8 suffices: the rest covers the
+//                                                         roundings of the bounds themselves),
+//   |x - X| <= 3 errT |a2 - a1| + 2 u^2 |a1 + th (a2 - a1)|.
+// These are about 2^-90 relative on ordinary input, far below the half ulp that certification
+// needs. Compiled twice below: for fma, and for the base instruction set.
+[[gnu::always_inline]] inline bool alongSegment(Point a1, Point a2, Point b1, Point b2,
+                                                Point& out) {
+  const TwoTerm bx = twoDiff(b2.x, b1.x), by = twoDiff(b2.y, b1.y);
+  const Determinant w1 = determinant(bx, by, twoDiff(a1.y, b1.y), twoDiff(a1.x, b1.x));
+  const Determinant w2 = determinant(bx, by, twoDiff(a2.y, b1.y), twoDiff(a2.x, b1.x));
+  const TwoTerm d = twoSum(w1.s, -w2.s);
+  const double ds = d.hi, dl = d.lo + (w1.lo - w2.lo);
+  const double th = w1.s / ds;
+  const double tl = (std::fma(-th, ds, w1.s) + (w1.lo - th * dl)) / ds;
 
-  const Wide bx = Wide(b2.x) - b1.x, by = Wide(b2.y) - b1.y;
-  const Wide w1 = bx * (Wide(a1.y) - b1.y) - by * (Wide(a1.x) - b1.x);
-  const Wide w2 = bx * (Wide(a2.y) - b1.y) - by * (Wide(a2.x) - b1.x);
-  const Wide d = w1 - w2;
-  const Wide t = w1 / d;
+  const double size = w1.magnitude + w2.magnitude, k = size / std::abs(ds);
+  if (!(size >= 0x1p-800 && size <= 0x1p1010) || !(k <= 0x1p40)) return false;  // also NaN
+  const double errT = 0x1p12 * kU2 * (1 + std::abs(th)) * (1 + k) * (1 + k);
 
-  const double ad = std::abs(static_cast<double>(d)), at = std::abs(static_cast<double>(t));
-  const double ed = (2 * e + kUW * ad) * kSlack;
-  const double errT = (2 * (e + at * ed) / ad + 2 * kUW * at) * kSlack * kSlack;
-  if (!(s >= 0x1p-900 && s <= 0x1p1010) || !(2 * ed * kSlack <= ad) || !(errT < 1)) return false;  // also NaN
+  auto along = [&](double from, double to, double& coordinate) {
+    const TwoTerm delta = twoDiff(to, from), p = twoProduct(th, delta.hi);
+    const double pe = p.lo + std::fma(th, delta.lo, tl * delta.hi);
+    const TwoTerm s = twoSum(from, p.hi);
+    const TwoTerm x = twoSum(s.hi, s.lo + pe);
+    return certify(x, 3 * errT * std::abs(delta.hi) + 2 * kU2 * std::abs(s.hi), coordinate);
+  };
+  return along(a1.x, a2.x, out.x) & along(a1.y, a2.y, out.y);
+}
 
-  const Wide x = a1.x + t * (Wide(a2.x) - a1.x), y = a1.y + t * (Wide(a2.y) - a1.y);
-  const double errStep = errT + 2 * kUW * at;
-  const double boundX = (errStep * std::abs(a2.x - a1.x) * kSlack + kUW * std::abs(static_cast<double>(x))) * kSlack;
-  const double boundY = (errStep * std::abs(a2.y - a1.y) * kSlack + kUW * std::abs(static_cast<double>(y))) * kSlack;
-  return certify(x, boundX, out.x) & certify(y, boundY, out.y);
+// alongSegment where fma is an instruction, and where it is a library call (the C library's fma
+// is correctly rounded: the same bounds hold, slower).
+using AlongSegment = bool (*)(Point, Point, Point, Point, Point&);
+#if defined(__x86_64__) || defined(__i386__)
+[[gnu::target("fma")]] bool alongSegmentFma(Point a1, Point a2, Point b1, Point b2, Point& out) {
+  return alongSegment(a1, a2, b1, b2, out);
+}
+#endif
+bool alongSegmentBase(Point a1, Point a2, Point b1, Point b2, Point& out) {
+  return alongSegment(a1, a2, b1, b2, out);
+}
+
+AlongSegment fastestAlongSegment() {
+#if defined(__x86_64__) || defined(__i386__)
+  if (__builtin_cpu_supports("fma")) return alongSegmentFma;
+#endif
+  return alongSegmentBase;  // elsewhere fma is in the base instruction set, or a library call
+}
+
+// Along p first; along q when p cannot certify (a coordinate much nearer 0 than p's extent in it,
+// e.g. the crossing of a long slanted edge with an axis, is interpolated exactly along an
+// axis-parallel q).
+bool certifiedCrossing(AlongSegment along, Point p1, Point p2, Point q1, Point q2, Point& out) {
+  return along(p1, p2, q1, q2, out) || along(q1, q2, p1, p2, out);
+}
+
+// The same at a power-of-two scale 2^e for segments near the origin whose products underflow
+// (every coordinate below 2^-300), if the result scales back exactly.
+bool certifiedCrossingOfTinySegments(AlongSegment along, Point p1, Point p2, Point q1, Point q2,
+                                     Point& out) {
+  double largest = 0;
+  for (const Point& v : {p1, p2, q1, q2})
+    largest = std::max({largest, std::abs(v.x), std::abs(v.y)});
+  if (!(largest > 0 && largest < 0x1p-300)) return false;
+  // The largest coordinate to [1, 2): every scaled coordinate is exact.
+  const int e = -std::ilogb(largest);
+  auto up = [e](Point v) { return Point{std::ldexp(v.x, e), std::ldexp(v.y, e)}; };
+  Point scaled;
+  if (!certifiedCrossing(along, up(p1), up(p2), up(q1), up(q2), scaled)) return false;
+  out = {std::ldexp(scaled.x, -e), std::ldexp(scaled.y, -e)};
+  return std::ldexp(out.x, e) == scaled.x && std::ldexp(out.y, e) == scaled.y;
+}
+
+Point construct(AlongSegment along, Point p1, Point p2, Point q1, Point q2) {
+  Point out;
+  if (certifiedCrossing(along, p1, p2, q1, q2, out) ||
+      certifiedCrossingOfTinySegments(along, p1, p2, q1, q2, out)) {
+    return out;
+  }
+  return exactCrossing(p1, p2, q1, q2);
 }
 
 }  // namespace
 
 Point constructCrossing(Point p1, Point p2, Point q1, Point q2) {
-  Point out;
-  // Along p first; along q when p cannot certify (a coordinate much nearer 0 than p's extent in
-  // it, e.g. the crossing of a long slanted edge with an axis, is interpolated exactly along an
-  // axis-parallel q).
-  if (kWideIsExtended && (alongSegment(p1, p2, q1, q2, out) || alongSegment(q1, q2, p1, p2, out))) return out;
-  return exactCrossing(p1, p2, q1, q2);
+  static const AlongSegment along = fastestAlongSegment();
+  return construct(along, p1, p2, q1, q2);
+}
+
+Point constructCrossingWithoutFmaInstruction(Point p1, Point p2, Point q1, Point q2) {
+  return construct(alongSegmentBase, p1, p2, q1, q2);
 }
 
 }  // namespace gh::detail

@@ -12,11 +12,16 @@ namespace gh::detail {
 
 // The crossing of segments p1p2 and q1q2, which must cross at a single point that is interior to
 // both or an endpoint of one (the caller has decided this exactly).
-//   1. Interpolated along p (then along q) from its first endpoint in long double (64-bit
-//      significand, 15-bit exponent where the platform has it): no product of doubles under- or
-//      overflows there, and a forward error bound certifies the rounding to double of most points.
+//   1. Interpolated along p (then along q) from its first endpoint in double-double arithmetic
+//      (error-free transformations, fma): a forward error bound of about 2^-90 certifies the
+//      rounding to double of almost every point. Segments near the origin too small for that
+//      (products below 2^-800) are tried again at a power-of-two scale.
 //   2. Otherwise the exact rational crossing, rounded to the nearest double (GMP).
 Point constructCrossing(Point p1, Point p2, Point q1, Point q2);
+
+// The same through the code compiled for the base instruction set (fma a library call), which
+// constructCrossing uses only on processors without fma: so that tests run it everywhere.
+Point constructCrossingWithoutFmaInstruction(Point p1, Point p2, Point q1, Point q2);
 
 // Crossings this thread constructed with exact arithmetic so far (step 2 above).
 std::uint64_t& exactConstructions();
