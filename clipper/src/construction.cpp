@@ -147,7 +147,8 @@ inline Determinant determinant(TwoTerm bx, TwoTerm by, TwoTerm ay, TwoTerm ax) {
     const TwoTerm x = twoSum(s.hi, s.lo + pe);
     return certify(x, 3 * errT * std::abs(delta.hi) + 2 * kU2 * std::abs(s.hi), coordinate);
   };
-  return along(a1.x, a2.x, out.x) & along(a1.y, a2.y, out.y);
+  const bool xCertified = along(a1.x, a2.x, out.x), yCertified = along(a1.y, a2.y, out.y);
+  return xCertified && yCertified;
 }
 
 // alongSegment where fma is an instruction, and where it is a library call (the C library's fma
