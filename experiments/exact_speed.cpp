@@ -3,10 +3,14 @@
 // iteration clipping the next pair of the same pool of 16 seeded pairs as Table 1. Many
 // repetitions, interleaved in random order, so that the machine's drift hits both alike; the
 // report gives medians, the ratio, and how often exact arithmetic was needed. Google Benchmark's
-// JSON goes beside the report (OUT.json) and the report is made from it.
+// JSON goes beside the report (OUT.json) and the report is made from it. A second table times
+// the construction of crossing points alone: the paper's double formula against the certified
+// construction, on this processor's code path and on the one for processors without fma.
 //   exact_speed OUT.md [google benchmark flags]
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -16,6 +20,7 @@
 #include "common/bench_json.h"
 #include "common/bench_methods.h"
 #include "common/provenance.h"
+#include "construction.h"
 #include "ghio/formats.h"
 #include "tool_main.h"
 
@@ -28,6 +33,59 @@ constexpr int kRepetitions = 25;
 const long kSizes[] = {10, 100, 1000};
 const char* const kMethods[] = {"naive", "exact"};
 
+// kCrossings pairs of segments in the unit square that cross (splitmix64 from a fixed seed).
+constexpr long kCrossings = 4096;
+struct SegmentPair {
+  Point p1, p2, q1, q2;
+};
+const std::vector<SegmentPair>& crossingSegments() {
+  static const std::vector<SegmentPair> pairs = [] {
+    std::uint64_t state = 20261122;
+    auto unit = [&state] {
+      std::uint64_t z = (state += 0x9e3779b97f4a7c15);
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111eb;
+      return std::ldexp(static_cast<double>((z ^ (z >> 31)) >> 11), -53);
+    };
+    // A crude sign test is enough to pick crossing pairs: the constructions are what is timed.
+    auto side = [](Point a, Point b, Point c) {
+      return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    };
+    std::vector<SegmentPair> out;
+    while (static_cast<long>(out.size()) < kCrossings) {
+      const SegmentPair s{{unit(), unit()}, {unit(), unit()}, {unit(), unit()}, {unit(), unit()}};
+      if (side(s.p1, s.p2, s.q1) * side(s.p1, s.p2, s.q2) < 0 &&
+          side(s.q1, s.q2, s.p1) * side(s.q1, s.q2, s.p2) < 0) {
+        out.push_back(s);
+      }
+    }
+    return out;
+  }();
+  return pairs;
+}
+
+// The paper's construction in doubles (what the naive variant does), unchecked.
+Point doubleCrossing(Point p1, Point p2, Point q1, Point q2) {
+  const double w1 = (q2.x - q1.x) * (p1.y - q1.y) - (q2.y - q1.y) * (p1.x - q1.x);
+  const double w2 = (q2.x - q1.x) * (p2.y - q1.y) - (q2.y - q1.y) * (p2.x - q1.x);
+  const double t = w1 / (w1 - w2);
+  return {p1.x + t * (p2.x - p1.x), p1.y + t * (p2.y - p1.y)};
+}
+
+struct Construction {
+  const char* name;
+  const char* label;
+  Point (*construct)(Point, Point, Point, Point);
+};
+const Construction kConstructions[] = {
+    {"double", "the paper's formula in doubles (naive; not certified)", doubleCrossing},
+    {"certified",
+     "certified, this processor's path (double-double, fma instruction where the processor has it)",
+     detail::constructCrossing},
+    {"certified-base", "certified, the path for processors without fma (fma by library call)",
+     detail::constructCrossingWithoutFmaInstruction},
+};
+
 }  // namespace
 
 int run(int argc, char** argv) {
@@ -37,11 +95,28 @@ int run(int argc, char** argv) {
   const std::string out = argv[1];
   const std::string json = std::filesystem::path(out).replace_extension(".json").string();
   for (const char* m : kMethods) {
-    auto* b = benchmark::RegisterBenchmark((std::string("random/") + m).c_str(), [m](benchmark::State& s) {
-      runMethodOnPool(s, m, seededPool("random", static_cast<std::size_t>(s.range(0))), Op::Intersection);
-    });
+    auto* b = benchmark::RegisterBenchmark(
+        (std::string("random/") + m).c_str(), [m](benchmark::State& s) {
+          runMethodOnPool(s, m, seededPool("random", static_cast<std::size_t>(s.range(0))),
+                          Op::Intersection);
+        });
     for (long n : kSizes) b->Arg(n);
     b->Unit(benchmark::kMicrosecond)->MinTime(0.2)->Repetitions(kRepetitions);
+  }
+  for (const Construction& c : kConstructions) {
+    auto* b = benchmark::RegisterBenchmark(
+        (std::string("construction/") + c.name).c_str(), [c](benchmark::State& s) {
+          const auto& pairs = crossingSegments();
+          const std::uint64_t before = detail::exactConstructions();
+          for (auto _ : s) {
+            for (const SegmentPair& p : pairs)
+              benchmark::DoNotOptimize(c.construct(p.p1, p.p2, p.q1, p.q2));
+          }
+          s.counters["exact_constructions"] =
+              static_cast<double>(detail::exactConstructions() - before) /
+              static_cast<double>(s.iterations() * pairs.size());
+        });
+    b->Arg(kCrossings)->Unit(benchmark::kMicrosecond)->MinTime(0.2)->Repetitions(kRepetitions);
   }
   std::vector<char*> args{argv[0]};
   bool listing = false;
@@ -49,8 +124,8 @@ int run(int argc, char** argv) {
     args.push_back(argv[i]);
     listing = listing || std::string(argv[i]).rfind("--benchmark_list_tests", 0) == 0;
   }
-  std::string interleave = "--benchmark_enable_random_interleaving=true", outFlag = "--benchmark_out=" + json,
-              formatFlag = "--benchmark_out_format=json";
+  std::string interleave = "--benchmark_enable_random_interleaving=true",
+              outFlag = "--benchmark_out=" + json, formatFlag = "--benchmark_out_format=json";
   for (std::string* flag : {&interleave, &outFlag, &formatFlag}) args.push_back(flag->data());
   int n = static_cast<int>(args.size());
   benchmark::Initialize(&n, args.data());
@@ -63,27 +138,58 @@ int run(int argc, char** argv) {
   std::ostringstream md;
   md << "# What exactness costs: exact against naive on the paper's random workload\n\n"
      << markdown(provenance(argc, argv)) << "\n"
-     << "Two random n-gons in the unit square, intersection; each timed iteration clips the next of the "
+     << "Two random n-gons in the unit square, intersection; each timed iteration clips the next "
+        "of the "
         "16 seeded pairs of Table 1 (seeds 1000-1015). "
-     << kRepetitions << " repetitions per method and size, run in random interleaved order; times are "
-        "medians over the repetitions, [min-max] beside them. The exact variant picks all pairs here, as "
-        "naive does (clipper/src/search_choice.h), so the ratio is the cost of exact predicates, Simulation "
-        "of Simplicity and certified constructions. Target (issue 6): exact within 1.5x of naive.\n\n"
-     << "| n | naive µs | exact µs | exact / naive | crossings per clip | exact: filter failures per candidate pair | "
-        "exact: constructions rounded from rationals per crossing |\n|---|---|---|---|---|---|---|\n";
+     << kRepetitions
+     << " repetitions per method and size, run in random interleaved order; times are "
+        "medians over the repetitions, [min-max] beside them. The exact variant picks all pairs "
+        "here, as "
+        "naive does (clipper/src/search_choice.h), so the ratio is the cost of exact predicates, "
+        "Simulation "
+        "of Simplicity and certified constructions. Target (issue 6): exact within 1.5x of "
+        "naive.\n\n"
+     << "| n | naive µs | exact µs | exact / naive | crossings per clip | exact: filter failures "
+        "per candidate pair | "
+        "exact: constructions rounded from rationals per crossing "
+        "|\n|---|---|---|---|---|---|---|\n";
   for (long size : kSizes) {
     const BenchRow* nv = findRow(f, "random/naive", size);
     const BenchRow* ex = findRow(f, "random/exact", size);
-    auto cell = [](const BenchRow* r) { return r ? timeRange(*r, 1000) : std::string("–"); };  // ms -> µs
-    const double crossings = counterOf(ex, "intersections"), pairs = counterOf(ex, "candidate_pairs");
+    auto cell = [](const BenchRow* r) {
+      return r ? timeRange(*r, 1000) : std::string("–");
+    };  // ms -> µs
+    const double crossings = counterOf(ex, "intersections"),
+                 pairs = counterOf(ex, "candidate_pairs");
     md << "| " << size << " | " << cell(nv) << " | " << cell(ex) << " | "
-       << (nv && ex ? reportNumber(ex->medianMs / nv->medianMs) : "–") << " | " << reportNumber(crossings) << " | "
+       << (nv && ex ? reportNumber(ex->medianMs / nv->medianMs) : "–") << " | "
+       << reportNumber(crossings) << " | "
        << (pairs > 0 ? reportNumber(counterOf(ex, "filter_failures") / pairs) : "–") << " | "
-       << (crossings > 0 ? reportNumber(counterOf(ex, "exact_constructions") / crossings) : "–") << " |\n";
+       << (crossings > 0 ? reportNumber(counterOf(ex, "exact_constructions") / crossings) : "–")
+       << " |\n";
+  }
+  md << "\n## The construction of crossing points alone\n\n"
+     << kCrossings
+     << " pairs of crossing segments in the unit square (splitmix64, seed 20261122); each timed "
+     << "iteration constructs all of them; medians of " << kRepetitions
+     << " repetitions, interleaved with the "
+     << "runs above. Certified: each coordinate is a faithful rounding of the exact crossing "
+        "(clipper/src/construction.h), GMP only when the double-double bound cannot certify.\n\n"
+     << "| construction | ns per crossing | / double | taken by GMP, per crossing "
+        "|\n|---|---|---|---|\n";
+  const BenchRow* base = findRow(f, "construction/double", kCrossings);
+  for (const Construction& c : kConstructions) {
+    const BenchRow* r = findRow(f, std::string("construction/") + c.name, kCrossings);
+    const double perCrossing = 1e6 / kCrossings;  // ms per iteration -> ns per crossing
+    md << "| " << c.label << " | " << (r ? timeRange(*r, perCrossing) : "–") << " | "
+       << (r && base ? reportNumber(r->medianMs / base->medianMs) : "–") << " | "
+       << (r ? reportNumber(counterOf(r, "exact_constructions")) : "–") << " |\n";
   }
   io::writeText(out, md.str());
   std::cout << "wrote " << out << "\n";
   return 0;
 }
 
-int main(int argc, char** argv) { return tools::guardedMain("exact_speed", argc, argv, run); }
+int main(int argc, char** argv) {
+  return tools::guardedMain("exact_speed", argc, argv, run);
+}
