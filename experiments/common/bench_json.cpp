@@ -20,22 +20,6 @@ double toMs(double t, const std::string& unit) {
   return t;
 }
 
-BenchFile readBenchJsonOrThrow(const std::string& path);
-
-}  // namespace
-
-BenchFile readBenchJson(const std::string& path) {
-  try {
-    return readBenchJsonOrThrow(path);
-  } catch (const tools::BadInput&) {
-    throw;
-  } catch (const std::exception& e) {  // nlohmann's parse and type errors, a name without "/<n>"
-    throw tools::BadInput(path + ": not Google Benchmark JSON: " + e.what());
-  }
-}
-
-namespace {
-
 BenchFile readBenchJsonOrThrow(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw tools::BadInput(path + ": cannot open");
@@ -100,6 +84,16 @@ BenchFile readBenchJsonOrThrow(const std::string& path) {
 }
 
 }  // namespace
+
+BenchFile readBenchJson(const std::string& path) {
+  try {
+    return readBenchJsonOrThrow(path);
+  } catch (const tools::BadInput&) {
+    throw;
+  } catch (const std::exception& e) {  // nlohmann's parse and type errors, a name without "/<n>"
+    throw tools::BadInput(path + ": not Google Benchmark JSON: " + e.what());
+  }
+}
 
 const BenchRow* findRow(const BenchFile& f, const std::string& family, long n) {
   const auto it = f.rows.find(family);
