@@ -86,5 +86,11 @@ check "report_tables on cut JSON: one line naming the file" \
   test "$(wc -l <"$TMP/rt.err")" -eq 1 -a -n "$(grep cut.json "$TMP/rt.err")"
 check "report_tables on cut JSON: no table" test ! -e "$TMP/tables/table1.md"
 
+# exact_speed with a filter that matches nothing: exit 2 and one line, not an abort.
+"$BIN/exact_speed" "$TMP/speed.md" --benchmark_filter=matches-nothing >/dev/null 2>"$TMP/es.err"
+check "exact_speed, empty filter: exit 2" test $? -eq 2
+check "exact_speed, empty filter: the reason on stderr" grep -q "matched" "$TMP/es.err"
+check "exact_speed, empty filter: no report" test ! -e "$TMP/speed.md"
+
 echo "$passes passed, $fails failed"
 test "$fails" -eq 0
