@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 namespace gh {
 namespace {
@@ -97,13 +98,8 @@ RC_GTEST_PROP(Construction, CrossingsOfMixedMagnitudesAreFaithfullyRounded, ()) 
 // the crossing of segments with few-bit coordinates may itself need rounding).
 TEST(Construction, CertifiedPathDecidesRandomCrossingsAtEveryScale) {
   for (const int scale : {0, -1000, -600, 400}) {
-    std::uint64_t state = 20261122;
-    auto unit = [&state, scale] {  // splitmix64: the cases do not depend on the library's engines
-      std::uint64_t z = (state += 0x9e3779b97f4a7c15);
-      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9;
-      z = (z ^ (z >> 27)) * 0x94d049bb133111eb;
-      return std::ldexp(static_cast<double>((z ^ (z >> 31)) >> 11), -53 + scale);
-    };
+    std::mt19937_64 rng(20261122);  // its output is fixed by the standard, unlike distributions'
+    auto unit = [&rng, scale] { return std::ldexp(static_cast<double>(rng() >> 11), -53 + scale); };
     const std::uint64_t before = detail::exactConstructions();
     int crossings = 0;
     while (crossings < 10000) {
