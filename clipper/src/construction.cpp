@@ -20,35 +20,35 @@ namespace {
 
 constexpr double kU2 = 0x1p-106;  // the square of double's unit roundoff u = 2^-53
 
-// The two doubles next to a finite d (nextafter without the library call: adjacent doubles of
-// one sign have adjacent bit patterns).
+// The double next to a finite nonzero d, away from zero (+1) or toward it (-1): adjacent doubles
+// of one sign have adjacent bit patterns (nextafter without the library call).
+double adjacent(double d, int away) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &d, sizeof d);
+  bits += static_cast<std::uint64_t>(static_cast<std::int64_t>(away));
+  double out;
+  std::memcpy(&out, &bits, sizeof out);
+  return out;
+}
+
+// The two doubles next to a finite d.
 void neighbours(double d, double& below, double& above) {
   if (d == 0) {
     below = -std::numeric_limits<double>::denorm_min(),
     above = std::numeric_limits<double>::denorm_min();
     return;
   }
-  std::uint64_t bits;
-  std::memcpy(&bits, &d, sizeof d);
-  const std::uint64_t away = bits + 1, toward = bits - 1;  // away from zero / toward zero
-  double a, t;
-  std::memcpy(&a, &away, sizeof a);
-  std::memcpy(&t, &toward, sizeof t);
+  const double away = adjacent(d, +1), toward = adjacent(d, -1);
   if (d > 0)
-    below = t, above = a;
+    below = toward, above = away;
   else
-    below = a, above = t;
+    below = away, above = toward;
 }
 
 // The distance from a normal double d to its neighbour toward zero, the nearer of its two (they
 // differ only at a power of two, where the one below is half as far). Exact: a power of two.
 double gapAround(double d) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &d, sizeof d);
-  const std::uint64_t toward = bits - 1;
-  double t;
-  std::memcpy(&t, &toward, sizeof t);
-  return std::abs(d - t);
+  return std::abs(d - adjacent(d, -1));
 }
 
 // Is hi a faithful rounding of every value within `bound` of hi + lo? It is when that interval
