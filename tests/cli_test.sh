@@ -86,6 +86,13 @@ check "report_tables on cut JSON: one line naming the file" \
   test "$(wc -l <"$TMP/rt.err")" -eq 1 -a -n "$(grep cut.json "$TMP/rt.err")"
 check "report_tables on cut JSON: no table" test ! -e "$TMP/tables/table1.md"
 
+# --help prints the usage and exits 0, in every tool that parses its command line with CLI11.
+for tool in ghclip ghcheck ghgen robustness; do
+  "$BIN/$tool" --help >"$TMP/help.out" 2>"$TMP/help.err"
+  check "$tool --help: exit 0" test $? -eq 0
+  check "$tool --help: prints the options" grep -q -- "--help" "$TMP/help.out"
+done
+
 # exact_speed with a filter that matches nothing: exit 2 and one line, not an abort.
 "$BIN/exact_speed" "$TMP/speed.md" --benchmark_filter=matches-nothing >/dev/null 2>"$TMP/es.err"
 check "exact_speed, empty filter: exit 2" test $? -eq 2
