@@ -71,15 +71,21 @@ struct Reader {
   }
 };
 
-bool writeAll(int fd, const void* data, std::size_t n) {
-  const char* p = static_cast<const char*>(data);
+// Repeats a blocking ::read or ::write until all n bytes are moved; false at end of file or on
+// an error other than an interrupted call.
+template <typename Byte, typename Transfer>
+bool transferAll(int fd, Byte* p, std::size_t n, Transfer transfer) {
   while (n > 0) {
-    const ssize_t k = ::write(fd, p, n);
+    const ssize_t k = transfer(fd, p, n);
     if (k < 0 && errno == EINTR) continue;
     if (k <= 0) return false;
     p += k, n -= static_cast<std::size_t>(k);
   }
   return true;
+}
+
+bool writeAll(int fd, const void* data, std::size_t n) {
+  return transferAll(fd, static_cast<const char*>(data), n, ::write);
 }
 
 bool sendMessage(int fd, const std::vector<char>& bytes) {
@@ -88,16 +94,7 @@ bool sendMessage(int fd, const std::vector<char>& bytes) {
 }
 
 // Blocking read of exactly n bytes (the worker's side); false at end of file.
-bool readAll(int fd, void* data, std::size_t n) {
-  char* p = static_cast<char*>(data);
-  while (n > 0) {
-    const ssize_t k = ::read(fd, p, n);
-    if (k < 0 && errno == EINTR) continue;
-    if (k <= 0) return false;
-    p += k, n -= static_cast<std::size_t>(k);
-  }
-  return true;
-}
+bool readAll(int fd, void* data, std::size_t n) { return transferAll(fd, static_cast<char*>(data), n, ::read); }
 
 enum class Receive { Done, Closed, TimedOut };
 
