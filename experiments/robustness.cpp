@@ -168,11 +168,7 @@ int run(int argc, char** argv) {
   app.add_option("--cases", cases, "cases per class (default 25, 200 with --full)")->check(CLI::PositiveNumber);
   app.add_flag("--full", full, "the large study");
   app.add_option("--timeout", timeout, "seconds before a case is killed")->check(CLI::PositiveNumber);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return tools::usageError("robustness", e.what());
-  }
+  if (const auto exitCode = tools::parseCommandLine(app, "robustness", argc, argv)) return *exitCode;
   if (cases == 0) cases = full ? 200 : 25;
   const fs::path out = outDir;
   const std::vector<Method> methods = allMethods();

@@ -37,13 +37,7 @@ int run(int argc, char** argv) {
   app.add_flag("--expected", expectedOnly, "write the exact answer's rings instead of judging");
   app.add_option("-o,--output", outPath, "with --expected: output file")->capture_default_str();
   app.add_option("--format", formatName, "with --expected: wkt | geojson")->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    return gh::tools::usageError("ghcheck", e.what());
-  }
+  if (const auto exitCode = gh::tools::parseCommandLine(app, "ghcheck", argc, argv)) return *exitCode;
   const auto op = gh::parseOp(opName);
   if (!op) return gh::tools::usageError("ghcheck", "unknown --op '" + opName + "'");
   if (oracleName != "exact" && oracleName != "sample") {

@@ -50,13 +50,7 @@ int run(int argc, char** argv) {
   app.add_option("--check", checkName,
                  "judge the result with an oracle: exact | sample (exit 1 if it fails)");
   app.add_flag("--sanitize", sanitize, "drop rings with fewer than 3 distinct vertices");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    return gh::tools::usageError("ghclip", e.what());
-  }
+  if (const auto exitCode = gh::tools::parseCommandLine(app, "ghclip", argc, argv)) return *exitCode;
 
   const auto op = gh::parseOp(opName);
   if (!op) return gh::tools::usageError("ghclip", "unknown --op '" + opName + "'");

@@ -33,13 +33,7 @@ int run(int argc, char** argv) {
   app.add_option("--svg", svgPath, "also draw the pair to this SVG file");
   app.add_option("-o,--output", outPath, "output file ('-' = stdout)")->capture_default_str();
   app.add_option("--format", formatName, "wkt | geojson")->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    return gh::tools::usageError("ghgen", e.what());
-  }
+  if (const auto exitCode = gh::tools::parseCommandLine(app, "ghgen", argc, argv)) return *exitCode;
   if (formatName != "wkt" && formatName != "geojson") {
     return gh::tools::usageError("ghgen", "unknown --format '" + formatName + "'");
   }

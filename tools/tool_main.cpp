@@ -22,6 +22,17 @@ int usageError(const std::string& tool, const std::string& message) {
   return kExitBadInput;
 }
 
+std::optional<int> parseCommandLine(CLI::App& app, const char* tool, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return usageError(tool, e.what());
+  }
+  return std::nullopt;
+}
+
 Region readRegion(const std::string& path) {
   try {
     return io::readAuto(io::readText(path));

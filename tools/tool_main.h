@@ -1,6 +1,8 @@
 // What every ghclip tool shares: one-line errors with fixed exit codes, and reading regions.
 #pragma once
 
+#include <CLI/CLI.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +21,11 @@ class BadInput : public std::runtime_error {
 
 // Prints "tool: message" (one line) on stderr and returns kExitBadInput.
 int usageError(const std::string& tool, const std::string& message);
+
+// Parses the command line into app. Empty when the tool should go on; else its exit code: 0
+// after --help (CLI11 printed the usage), kExitBadInput with one line on stderr for a bad
+// command line.
+std::optional<int> parseCommandLine(CLI::App& app, const char* tool, int argc, char** argv);
 
 // Reads a region from a file ("-" = stdin), WKT or GeoJSON; BadInput names the file.
 Region readRegion(const std::string& path);
