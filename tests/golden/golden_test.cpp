@@ -1,0 +1,153 @@
+// Pins every variant's crossings and answers to golden data (golden_cases.h says what and why).
+//   GHCLIP_WRITE_GOLDEN=FILE golden_tests --gtest_filter=Golden.Write   rewrites the data
+// (only for a deliberate change: then mark each changed line with its reason, see the file).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "all_pairs_search.h"
+#include "exact_arithmetic.h"
+#include "ghclip/clip.h"
+#include "ghclip/errors.h"
+#include "ghwork/generators.h"
+#include "golden_cases.h"
+#include "naive_arithmetic.h"
+#include "phase1_intersections.h"
+#include "search_choice.h"
+#include "sweep_search.h"
+
+namespace gh::golden {
+namespace {
+
+using namespace detail;
+
+// Phase 1 as gh::clip runs it for the variant (the same search choice).
+Phase1Result phase1(Variant v, const Region& s, const Region& c, Stats& stats) {
+  Operand S(s, false), C(c, false);
+  const bool sweep = v == Variant::Sweep || (v == Variant::Exact && sweepPays(S, C));
+  if (v == Variant::Exact) {
+    if (sweep) return findIntersections(std::move(S), std::move(C), SweepSearch{}, ExactArithmetic{}, stats);
+    return findIntersections(std::move(S), std::move(C), AllPairsSearch{}, ExactArithmetic{}, stats);
+  }
+  if (sweep) return findIntersections(std::move(S), std::move(C), SweepSearch{}, NaiveArithmetic{}, stats);
+  return findIntersections(std::move(S), std::move(C), AllPairsSearch{}, NaiveArithmetic{}, stats);
+}
+
+// "<count> <fingerprint>" of the crossings in order along the subject, then along the clip, and
+// the number of perturbed vertices.
+std::string crossingsLine(Variant v, const work::Workload& w) {
+  try {
+    Stats stats;
+    const Phase1Result r = phase1(v, w.subject, w.clip, stats);
+    Fingerprint f;
+    for (std::uint32_t id : r.subjectOrder) {
+      const Crossing& x = r.crossings[id];
+      f.add(std::uint64_t{x.subjectEdge}), f.add(std::uint64_t{x.clipEdge}), f.add(x.point);
+    }
+    for (std::uint32_t id : r.clipOrder) {
+      f.add(std::uint64_t{r.crossings[id].clipEdge}), f.add(std::uint64_t{r.crossings[id].subjectEdge});
+    }
+    std::ostringstream s;
+    s << r.crossings.size() << " " << std::hex << f.value() << std::dec << " perturbations=" << stats.perturbations;
+    return s.str();
+  } catch (const ClipFailure&) {
+    return "failed";
+  } catch (const InvalidInput&) {
+    return "invalid";
+  }
+}
+
+std::string answerLine(Variant v, const work::Workload& w, Op op) {
+  try {
+    Options o;
+    o.variant = v;
+    const Region r = clip(w.subject, w.clip, op, o);
+    std::ostringstream s;
+    s << r.size() << " " << std::hex << fingerprint(r);
+    return s.str();
+  } catch (const ClipFailure&) {
+    return "failed";
+  } catch (const InvalidInput&) {
+    return "invalid";
+  }
+}
+
+constexpr Variant kVariants[] = {Variant::Naive, Variant::Sweep, Variant::Exact};
+
+// Every line of one case: "<variant> <workload> <n> <seed> <what> <value>".
+std::vector<std::pair<std::string, std::string>> linesOf(const Case& c) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const work::Workload w = work::generate(c.workload, c.n, c.seed);
+  for (Variant v : kVariants) {
+    const std::string k = key(std::string(name(v)), c);
+    out.push_back({k + " crossings", crossingsLine(v, w)});
+    for (Op op : c.ops) out.push_back({k + " " + std::string(name(op)), answerLine(v, w, op)});
+  }
+  return out;
+}
+
+// The golden file: "<key> <what> | <value>[ | <reason for a deliberate change>]".
+std::map<std::string, std::string> readGolden() {
+  std::ifstream in(GHCLIP_GOLDEN_FILE);
+  std::map<std::string, std::string> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    const auto bar = line.find(" | ");
+    if (bar == std::string::npos) continue;
+    const auto reason = line.find(" | ", bar + 3);
+    out[line.substr(0, bar)] = line.substr(bar + 3, reason == std::string::npos ? std::string::npos : reason - bar - 3);
+  }
+  return out;
+}
+
+// Cases grouped so that ctest runs the groups in parallel.
+std::vector<Case> group(const std::string& name) {
+  std::vector<Case> out;
+  for (const Case& c : cases()) {
+    const std::string g = c.workload == "random" ? "random_" + std::to_string(c.n) : c.n == 200 ? "realistic" : "degenerate";
+    if (g == name) out.push_back(c);
+  }
+  return out;
+}
+
+class Golden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Golden, CrossingsAndAnswersAsPinned) {
+  if (std::getenv("GHCLIP_WRITE_GOLDEN")) GTEST_SKIP() << "writing, not comparing";
+  static const auto golden = readGolden();
+  ASSERT_FALSE(golden.empty()) << "no golden data at " << GHCLIP_GOLDEN_FILE;
+  int compared = 0;
+  for (const Case& c : group(GetParam())) {
+    for (const auto& [k, value] : linesOf(c)) {
+      const auto it = golden.find(k);
+      ASSERT_NE(it, golden.end()) << "no golden line for " << k;
+      EXPECT_EQ(value, it->second) << k;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Pools, Golden,
+                         ::testing::Values("random_10", "random_20", "random_50", "random_100", "random_200",
+                                           "random_500", "random_1000", "random_2000", "degenerate", "realistic"));
+
+TEST(Golden, Write) {
+  const char* path = std::getenv("GHCLIP_WRITE_GOLDEN");
+  if (!path) GTEST_SKIP() << "set GHCLIP_WRITE_GOLDEN=FILE to write";
+  std::ofstream out(path);
+  out << "# Golden data of tests/golden/golden_test.cpp: \"<variant> <workload> <n> <seed> <what> | <value>\",\n"
+         "# <what> = crossings (count, fingerprint, perturbed vertices) or an operation (rings, fingerprint).\n"
+         "# A third field \"| reason\" marks a deliberate change from the data first written.\n";
+  for (const Case& c : cases()) {
+    for (const auto& [k, value] : linesOf(c)) out << k << " | " << value << "\n";
+  }
+  ASSERT_TRUE(out.good());
+}
+
+}  // namespace
+}  // namespace gh::golden
