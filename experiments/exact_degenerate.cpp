@@ -56,8 +56,7 @@ int run(int argc, char** argv) {
           Stats stats;
           Region r;
           try {
-            Options o;
-            o.variant = v;
+            Options o = optionsOf(v);
             r = clip(w.subject, w.clip, op, o, &stats);
           } catch (const ClipFailure& e) {
             ++t.clipFailures, ++t.fails;

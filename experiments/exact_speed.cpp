@@ -21,9 +21,9 @@
 #include "common/bench_json.h"
 #include "common/bench_methods.h"
 #include "common/provenance.h"
-#include "construction.h"
+#include "predicates/construction.h"
 #include "ghio/formats.h"
-#include "orientation.h"
+#include "predicates/orientation.h"
 #include "tool_main.h"
 
 using namespace gh;
@@ -53,10 +53,12 @@ const std::vector<SegmentPair>& crossingSegments() {
       return a != detail::Sign::Zero && b != detail::Sign::Zero && a != b;
     };
     std::vector<SegmentPair> out;
+    detail::ExactCounters counters;
+    auto orientation = [&counters](Point a, Point b, Point c) { return detail::orientation(a, b, c, counters); };
     while (static_cast<long>(out.size()) < kCrossings) {
       const SegmentPair s{point(), point(), point(), point()};
-      if (opposite(detail::orientation(s.p1, s.p2, s.q1), detail::orientation(s.p1, s.p2, s.q2)) &&
-          opposite(detail::orientation(s.q1, s.q2, s.p1), detail::orientation(s.q1, s.q2, s.p2))) {
+      if (opposite(orientation(s.p1, s.p2, s.q1), orientation(s.p1, s.p2, s.q2)) &&
+          opposite(orientation(s.q1, s.q2, s.p1), orientation(s.q1, s.q2, s.p2))) {
         out.push_back(s);
       }
     }
@@ -66,7 +68,7 @@ const std::vector<SegmentPair>& crossingSegments() {
 }
 
 // The paper's construction in doubles (what the naive variant does), unchecked.
-Point doubleCrossing(Point p1, Point p2, Point q1, Point q2) {
+Point doubleCrossing(Point p1, Point p2, Point q1, Point q2, detail::ExactCounters&) {
   const double w1 = (q2.x - q1.x) * (p1.y - q1.y) - (q2.y - q1.y) * (p1.x - q1.x);
   const double w2 = (q2.x - q1.x) * (p2.y - q1.y) - (q2.y - q1.y) * (p2.x - q1.x);
   const double t = w1 / (w1 - w2);
@@ -76,7 +78,7 @@ Point doubleCrossing(Point p1, Point p2, Point q1, Point q2) {
 struct Construction {
   const char* name;
   const char* label;
-  Point (*construct)(Point, Point, Point, Point);
+  Point (*construct)(Point, Point, Point, Point, detail::ExactCounters&);
 };
 const Construction kConstructions[] = {
     {"double", "the paper's formula in doubles (naive; not certified)", doubleCrossing},
@@ -108,13 +110,13 @@ int run(int argc, char** argv) {
     auto* b = benchmark::RegisterBenchmark(
         (std::string("construction/") + c.name).c_str(), [c](benchmark::State& s) {
           const auto& pairs = crossingSegments();
-          const std::uint64_t before = detail::exactConstructions();
+          detail::ExactCounters counters;
           for (auto _ : s) {
             for (const SegmentPair& p : pairs)
-              benchmark::DoNotOptimize(c.construct(p.p1, p.p2, p.q1, p.q2));
+              benchmark::DoNotOptimize(c.construct(p.p1, p.p2, p.q1, p.q2, counters));
           }
           s.counters["exact_constructions"] =
-              static_cast<double>(detail::exactConstructions() - before) /
+              static_cast<double>(counters.exactConstructions) /
               static_cast<double>(s.iterations() * pairs.size());
         });
     b->Arg(kCrossings)->Unit(benchmark::kMicrosecond)->MinTime(0.2)->Repetitions(kRepetitions);
@@ -175,7 +177,7 @@ int run(int argc, char** argv) {
      << "iteration constructs all of them; medians of " << kRepetitions
      << " repetitions, interleaved with the "
      << "runs above. Certified: each coordinate is a faithful rounding of the exact crossing "
-        "(clipper/src/construction.h), GMP only when the double-double bound cannot certify.\n\n"
+        "(clipper/src/predicates/construction.h), GMP only when the double-double bound cannot certify.\n\n"
      << "| construction | ns per crossing | / double | taken by GMP, per crossing "
         "|\n|---|---|---|---|\n";
   const BenchRow* base = findRow(f, "construction/double", kCrossings);

@@ -19,8 +19,7 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
   const Pair p = pair(data, size, 3, 16);
   const bool strict = variant == Variant::Exact;
   for (Op op : kAllOps) {
-    Options o;
-    o.variant = variant;
+    Options o = optionsOf(variant);
     Region r;
     try {
       r = clip(p.subject, p.clip, op, o);

@@ -9,8 +9,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const gh::fuzz::Pair p = gh::fuzz::pair(data, size, 2, 8);
   for (gh::Op op : gh::kAllOps) {
-    gh::Options o;
-    o.variant = gh::Variant::Exact;
+    gh::Options o = gh::optionsOf(gh::Variant::Exact);
     gh::Region r;
     try {
       r = gh::clip(p.subject, p.clip, op, o);

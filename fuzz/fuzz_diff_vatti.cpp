@@ -7,7 +7,7 @@
 #include "ghclip/clip.h"
 #include "ghclip/errors.h"
 #include "ghoracle/exact_oracle.h"
-#include "ghoracle/peer.h"
+#include "ghpeers/peer.h"
 #include "ghoracle/tolerance.h"
 
 namespace {
@@ -36,8 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const gh::Region s = integerRegion(in), c = integerRegion(in);
   const gh::peers::Peer* vatti = gh::peers::findPeer("clipper6");
   for (gh::Op op : gh::kAllOps) {
-    gh::Options o;
-    o.variant = gh::Variant::Exact;
+    gh::Options o = gh::optionsOf(gh::Variant::Exact);
     gh::Region ours, theirs;
     try {
       ours = gh::clip(s, c, op, o);

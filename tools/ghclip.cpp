@@ -11,7 +11,7 @@
 #include "ghio/formats.h"
 #include "ghio/svg.h"
 #include "ghoracle/exact_oracle.h"
-#include "ghoracle/peer.h"
+#include "ghpeers/peer.h"
 #include "ghoracle/sampling_oracle.h"
 #include "stats_json.h"
 #include "verdict_json.h"
@@ -25,18 +25,27 @@ constexpr const char* kDescription =
     "stdin. All rings of an input are pooled and its interior is the even-odd rule over all of\n"
     "them: holes are rings inside rings, and OGC shell/hole roles are ignored.\n"
     "Output: one polygon per ring (MULTIPOLYGON), to be read the same way.\n"
+    "Arithmetic: exact by default (exact predicates, Simulation of Simplicity: no input vertex\n"
+    "moves); --variant naive or --arithmetic paper runs the paper's doubles and perturbation.\n"
     "Exit codes: 0 done, 1 clipping failed on valid input, 2 bad input or usage.";
 
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "ghclip"};
-  std::string opName, variantName = "naive", subjectPath, clipPath, outPath = "-",
+  std::string opName, variantName, arithmeticName, searchName, subjectPath, clipPath, outPath = "-",
                       formatName = "wkt", svgPath;
   std::string checkName, peerName;
   bool wantStats = false, sanitize = false;
   app.add_option("--op", opName,
                  "intersection | union | difference | reverse-difference | xor")
       ->required();
-  app.add_option("--variant", variantName, "naive (the paper: all pairs, perturbation) | sweep (naive with a sweep) | exact (exact predicates, Simulation of Simplicity)")->capture_default_str();
+  app.add_option("--variant", variantName,
+                 "a named combination of the two options below: exact (the default: exact, auto) | naive (the "
+                 "paper as published: paper, all-pairs) | sweep (paper, sweep)");
+  app.add_option("--arithmetic", arithmeticName,
+                 "exact (default: exact predicates, Simulation of Simplicity) | paper (doubles, the paper's "
+                 "perturbation)");
+  app.add_option("--search", searchName,
+                 "auto (default: all pairs for paper, the cheaper for exact) | all-pairs | sweep");
   app.add_option("--peer", peerName,
                  "clip with a peer library instead: clipper6 | geos | boost | cgal (geos, boost "
                  "and cgal take only simple polygons with holes and refuse the rest, exit 2)");
@@ -54,9 +63,24 @@ int run(int argc, char** argv) {
 
   const auto op = gh::parseOp(opName);
   if (!op) return gh::tools::usageError("ghclip", "unknown --op '" + opName + "'");
-  const auto variant = gh::parseVariant(variantName);
-  if (!variant || !gh::isImplemented(*variant)) {
-    return gh::tools::usageError("ghclip", "unknown or unavailable --variant '" + variantName + "'");
+  gh::Options options;
+  if (!variantName.empty()) {
+    const auto variant = gh::parseVariant(variantName);
+    if (!variant) return gh::tools::usageError("ghclip", "unknown --variant '" + variantName + "'");
+    if (!arithmeticName.empty() || !searchName.empty()) {
+      return gh::tools::usageError("ghclip", "--variant names both --arithmetic and --search: give one or the others");
+    }
+    options = gh::optionsOf(*variant);
+  }
+  if (!arithmeticName.empty()) {
+    const auto arithmetic = gh::parseArithmetic(arithmeticName);
+    if (!arithmetic) return gh::tools::usageError("ghclip", "unknown --arithmetic '" + arithmeticName + "'");
+    options.arithmetic = *arithmetic;
+  }
+  if (!searchName.empty()) {
+    const auto search = gh::parseSearch(searchName);
+    if (!search) return gh::tools::usageError("ghclip", "unknown --search '" + searchName + "'");
+    options.search = *search;
   }
   if (formatName != "wkt" && formatName != "geojson") {
     return gh::tools::usageError("ghclip", "unknown --format '" + formatName + "'");
@@ -70,8 +94,6 @@ int run(int argc, char** argv) {
 
   const gh::Region subject = gh::tools::readRegion(subjectPath);
   const gh::Region clip = gh::tools::readRegion(clipPath);
-  gh::Options options;
-  options.variant = *variant;
   options.sanitize = sanitize;
   const gh::peers::Peer* peer = nullptr;
   if (!peerName.empty()) {
@@ -97,7 +119,7 @@ int run(int argc, char** argv) {
   const auto format = formatName == "geojson" ? gh::io::Format::GeoJson : gh::io::Format::Wkt;
   gh::io::writeText(outPath, gh::io::write(result, format));
   if (!svgPath.empty()) {
-    const std::string title = std::string(gh::name(*op)) + " (" + (peer ? peerName : variantName) +
+    const std::string title = std::string(gh::name(*op)) + " (" + (peer ? peerName : gh::name(options)) +
                               "), even-odd area " + std::to_string(gh::evenOddArea(result));
     gh::io::writeText(svgPath, gh::io::svgPicture({{&subject, "#c6dbef", "#2171b5", "subject"},
                                                    {&clip, "#fcbba1", "#cb181d", "clip"},
@@ -122,7 +144,9 @@ int run(int argc, char** argv) {
       j = {{"peer", peer->name()}, {"seconds", stats.phase1Seconds}, {"output_rings", stats.outputRings},
            {"output_vertices", stats.outputVertices}};
     } else {
-      j["variant"] = gh::name(*variant);
+      j["variant"] = gh::name(options);
+      j["arithmetic"] = gh::name(options.arithmetic);
+      j["search"] = gh::name(options.search);
     }
     if (!check.is_null()) j["check"] = check;
     (outPath == "-" ? std::cerr : std::cout) << j.dump() << std::endl;

@@ -1,16 +1,19 @@
-// Output clean-up shared by every variant: the result has no zero-length edges, no zero-width
+// Output clean-up shared by both arithmetics: the result has no zero-length edges, no zero-width
 // spikes and no zero-area rings (DESIGN.md section 1). None of them changes the even-odd interior;
-// the exact variant needs all three to return S for S n S exactly (the limit of its symbolic
+// the exact arithmetic needs all three to return S for S n S exactly (the limit of its symbolic
 // perturbation leaves slivers of zero width).
 #pragma once
 
 #include "ghclip/region.h"
+#include "predicates/exact_counters.h"
 
 namespace gh::detail {
 
 // Drops repeated points and spike tips (a -> b -> a' folding back on one line), then rings left
-// with fewer than 3 points or with all points on one line; all decided exactly.
-// With dissolveSeams (the exact variant), zero-width seams between rings are dissolved too.
-Region cleanedUp(Region region, bool dissolveSeams);
+// with fewer than 3 points or with all points on one line; all decided exactly, fallbacks to
+// rational arithmetic counted in `counters`. With dissolveSeams (for an arithmetic whose answers
+// are a limit that leaves zero-width parts: Arithmetic::kLeavesZeroWidthParts), zero-width seams
+// between rings that share a vertex are dissolved too.
+Region cleanedUp(Region region, bool dissolveSeams, ExactCounters& counters);
 
 }  // namespace gh::detail

@@ -1,77 +1,85 @@
-// The orchestrator: validate, phase 1 (variant-specific), phase 2, phase 3, clean-up.
+// The orchestrator: validate, phase 1, phase 2, phase 3, clean-up (clipper/src/README.md maps the
+// paper's sections to the files). The arithmetic policy is chosen once here; the paper's
+// perturbation wraps phase 1 for the paper arithmetic only.
 #include "ghclip/clip.h"
 
 #include <chrono>
-#include <string>
 
-#include "all_pairs_search.h"
+#include "arithmetic/exact_arithmetic.h"
+#include "arithmetic/paper_arithmetic.h"
 #include "cleanup.h"
-#include "ghclip/errors.h"
 #include "ghclip/measure.h"
-#include "ghclip/validate.h"
-#include "exact_arithmetic.h"
-#include "naive_arithmetic.h"
+#include "paper_perturbation.h"
 #include "phase1_intersections.h"
+#include "phase2_marking.h"
 #include "phase3_tracing.h"
-#include "search_choice.h"
-#include "sweep_search.h"
+#include "search/all_pairs_search.h"
+#include "search/search_choice.h"
+#include "search/sweep_search.h"
 #include "vertex_graph.h"
 
 namespace gh {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using namespace detail;
 
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Phase 1 as each arithmetic needs it: the exact one plain, the paper's inside its perturbation loop.
+template <class CandidateSearch>
+Phase1Result phase1(Operand s, Operand c, const CandidateSearch& search, const ExactArithmetic& a, Stats& stats) {
+  return findIntersections(std::move(s), std::move(c), search, a, stats);
 }
+template <class CandidateSearch>
+Phase1Result phase1(Operand s, Operand c, const CandidateSearch& search, const PaperArithmetic& a, Stats& stats) {
+  return findIntersectionsPerturbed(std::move(s), std::move(c), search, a, stats);
+}
+
+// Search::Auto resolved: the paper arithmetic tests all pairs, as in the paper; the exact one
+// whichever pays (search/search_choice.h).
+bool autoSweeps(const PaperArithmetic&, const Operand&, const Operand&) { return false; }
+bool autoSweeps(const ExactArithmetic&, const Operand& s, const Operand& c) { return sweepPays(s, c); }
 
 template <class Arithmetic>
-detail::Phase1Result withSearch(detail::Operand subject, detail::Operand clip, bool sweep, Stats& stats) {
-  if (sweep) {
-    return detail::findIntersections(std::move(subject), std::move(clip), detail::SweepSearch{}, Arithmetic{}, stats);
-  }
-  return detail::findIntersections(std::move(subject), std::move(clip), detail::AllPairsSearch{}, Arithmetic{}, stats);
-}
+Region clipWith(Operand s, Operand c, Op op, const Options& options, Stats& stats) {
+  ExactCounters counters;
+  const Arithmetic arithmetic(counters);
 
-detail::Phase1Result runPhase1(detail::Operand subject, detail::Operand clip, const Options& o, Stats& stats) {
-  bool sweep = o.search == Search::Sweep;
-  if (o.search == Search::Default) {
-    // naive: the paper's all pairs; sweep: the sweep; exact: whichever pays (search_choice.h).
-    sweep = o.variant == Variant::Sweep || (o.variant == Variant::Exact && detail::sweepPays(subject, clip));
-  }
-  if (o.variant == Variant::Exact) {
-    return withSearch<detail::ExactArithmetic>(std::move(subject), std::move(clip), sweep, stats);
-  }
-  return withSearch<detail::NaiveArithmetic>(std::move(subject), std::move(clip), sweep, stats);
+  auto t = Clock::now();
+  const bool sweep = options.search == Search::Auto ? autoSweeps(arithmetic, s, c) : options.search == Search::Sweep;
+  const Phase1Result crossings =
+      sweep ? phase1(std::move(s), std::move(c), SweepSearch{}, arithmetic, stats)
+          : phase1(std::move(s), std::move(c), AllPairsSearch{}, arithmetic, stats);
+  stats.phase1Seconds = secondsSince(t);
+
+  t = Clock::now();
+  VertexGraph graph = buildVertexGraph(crossings);
+  locateRingStarts(graph, arithmetic);
+  markEntryExit(graph);
+  stats.phase2Seconds = secondsSince(t);
+
+  t = Clock::now();
+  Region result = cleanedUp(traceResult(graph, op), Arithmetic::kLeavesZeroWidthParts, counters);
+  stats.phase3Seconds = secondsSince(t);
+
+  stats.filterFailures = counters.filterFailures;
+  stats.exactConstructions = counters.exactConstructions;
+  return result;
 }
 
 }  // namespace
 
-bool isImplemented(Variant) { return true; }
-
-Region clip(const Region& subject, const Region& clip, Op op, const Options& options,
-            Stats* stats) {
+Region clip(const Region& subject, const Region& clip, Op op, const Options& options, Stats* stats) {
   Stats local;
   // Validation copies the input once, straight into phase 1's flat arrays.
-  detail::Operand s(subject, options.sanitize);
-  detail::Operand c(clip, options.sanitize);
+  Operand s(subject, options.sanitize);
+  Operand c(clip, options.sanitize);
   local.subjectVertices = s.size();
   local.clipVertices = c.size();
-
-  auto t = Clock::now();
-  const detail::Phase1Result phase1 = runPhase1(std::move(s), std::move(c), options, local);
-  local.phase1Seconds = secondsSince(t);
-
-  t = Clock::now();
-  detail::VertexGraph graph = detail::buildVertexGraph(phase1);
-  detail::markEntryExit(graph);
-  local.phase2Seconds = secondsSince(t);
-
-  t = Clock::now();
-  Region result = detail::cleanedUp(detail::traceResult(graph, op), options.variant == Variant::Exact);
-  local.phase3Seconds = secondsSince(t);
-
+  Region result = options.arithmetic == Arithmetic::Exact
+                      ? clipWith<ExactArithmetic>(std::move(s), std::move(c), op, options, local)
+                      : clipWith<PaperArithmetic>(std::move(s), std::move(c), op, options, local);
   local.outputRings = result.size();
   local.outputVertices = vertexCount(result);
   if (stats) *stats = local;

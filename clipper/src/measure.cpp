@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "orientation.h"
+#include "predicates/even_odd_ray.h"
+#include "predicates/segment_meeting.h"
 
 namespace gh {
 namespace {
@@ -19,12 +20,8 @@ struct Segment {
 
 // x of the proper crossing of two segments, if they cross at an interior point.
 bool properCrossingX(const Segment& s, const Segment& t, double& x) {
-  using detail::orientation;
-  using detail::Sign;
-  const Sign o1 = orientation(s.a, s.b, t.a), o2 = orientation(s.a, s.b, t.b);
-  const Sign o3 = orientation(t.a, t.b, s.a), o4 = orientation(t.a, t.b, s.b);
-  if (o1 == Sign::Zero || o2 == Sign::Zero || o3 == Sign::Zero || o4 == Sign::Zero) return false;
-  if (o1 == o2 || o3 == o4) return false;
+  detail::ExactCounters counters;  // measurement, not a clip: its fallbacks are not reported
+  if (detail::meeting(s.a, s.b, t.a, t.b, counters) != detail::Meeting::Crossing) return false;
   const double d1 = (s.b.x - s.a.x) * (t.a.y - s.a.y) - (s.b.y - s.a.y) * (t.a.x - s.a.x);
   const double d2 = (s.b.x - s.a.x) * (t.b.y - s.a.y) - (s.b.y - s.a.y) * (t.b.x - s.a.x);
   const double alpha = d1 / (d1 - d2);  // along t
@@ -56,18 +53,15 @@ std::size_t vertexCount(const Region& region) {
 }
 
 bool insideEvenOdd(const Region& region, Point p) {
-  bool inside = false;
-  for (const Ring& ring : region) {
-    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-      const Point& a = ring[i];
-      const Point& b = ring[(i + 1) % n];
-      if ((a.y > p.y) != (b.y > p.y)) {
-        const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-        if (p.x < x) inside = !inside;
-      }
-    }
-  }
-  return inside;
+  detail::ExactCounters counters;
+  return detail::insideByRay(
+      p,
+      [&region](auto&& visit) {
+        for (const Ring& ring : region) {
+          for (std::size_t i = 0, n = ring.size(); i < n; ++i) visit(ring[i], ring[(i + 1) % n]);
+        }
+      },
+      counters);
 }
 
 double evenOddArea(const Region& region) {

@@ -13,25 +13,9 @@ std::string_view name(Op op) {
   return "?";
 }
 
-std::string_view name(Variant variant) {
-  switch (variant) {
-    case Variant::Naive: return "naive";
-    case Variant::Sweep: return "sweep";
-    case Variant::Exact: return "exact";
-  }
-  return "?";
-}
-
 std::optional<Op> parseOp(std::string_view text) {
   for (Op op : kAllOps) {
     if (name(op) == text) return op;
-  }
-  return std::nullopt;
-}
-
-std::optional<Variant> parseVariant(std::string_view text) {
-  for (Variant v : {Variant::Naive, Variant::Sweep, Variant::Exact}) {
-    if (name(v) == text) return v;
   }
   return std::nullopt;
 }

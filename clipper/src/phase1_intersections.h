@@ -1,76 +1,60 @@
-// Phase 1 of Greiner-Hormann: find every crossing of a subject edge with a clip edge.
+// Phase 1 of Greiner-Hormann (paper, Section 4.1): find every crossing of a subject edge with a
+// clip edge and order the crossings along both operands' edges.
 //
 // Written once over two plug-ins:
-//   Search     which edge pairs to test (all pairs, or a sweep): forEachCandidate(s, c, visit)
-//   Arithmetic how a pair is decided, how crossings are ordered along an edge, and whether a
-//              vertex lies inside the other operand (doubles + perturbation, or exact + SoS)
-// A policy that reports degenerate contacts gets them perturbed and the search run again,
-// until no degeneracy is left or kMaxPerturbationRounds is reached.
+//   Search     which edge pairs to test (search/: all pairs, or a sweep):
+//              forEachCandidate(subject, clip, visit)
+//   Arithmetic how a pair is decided and how crossings are ordered along an edge (arithmetic/:
+//              the paper's doubles, or exact predicates under Simulation of Simplicity)
+// A policy that can meet degenerate contacts (Arithmetic::kReportsDegeneracies, the paper's only)
+// reports them; phase 1 then lists the vertices concerned and stops before ordering. What to do
+// about them is not phase 1's business: paper_perturbation.h wraps it.
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
-#include <string>
 #include <vector>
 
-#include "construction.h"
-#include "crossing.h"
-#include "ghclip/errors.h"
+#include "arithmetic/pair_test.h"
 #include "ghclip/stats.h"
-#include "operand.h"
-#include "orientation.h"
-#include "pair_test.h"
+#include "phase1_result.h"
 
 namespace gh::detail {
 
-inline constexpr int kMaxPerturbationRounds = 32;
-
-// What phases 2 and 3 need from phase 1, whatever the policy.
-struct Phase1Result {
-  Operand subject;  // the vertices actually used (perturbed copies for the naive policy)
-  Operand clip;
-  std::vector<Crossing> crossings;
-  // Crossing ids sorted by (edge, position along the edge) for each operand.
-  std::vector<std::uint32_t> subjectOrder;
-  std::vector<std::uint32_t> clipOrder;
-  // Is the first vertex of each ring inside the other operand (even-odd)?
-  std::vector<char> subjectRingInside;
-  std::vector<char> clipRingInside;
+// Vertices found on the other operand's edges (sorted, unique).
+struct Degeneracies {
+  std::vector<std::uint32_t> subject, clip;
+  bool empty() const { return subject.empty() && clip.empty(); }
 };
 
 template <class Search, class Arithmetic>
-Phase1Result findIntersections(Operand subject, Operand clip, const Search& search,
-                               const Arithmetic& arithmetic, Stats& stats) {
-  Phase1Result r{std::move(subject), std::move(clip), {}, {}, {}, {}, {}};
-  const std::uint64_t fallbacksBefore = exactFallbacks(), constructionsBefore = exactConstructions();
-  for (int round = 0;; ++round) {
-    r.crossings.clear();
-    std::vector<std::uint32_t> degenerateSubject, degenerateClip;
-    search.forEachCandidate(r.subject, r.clip, [&](std::uint32_t se, std::uint32_t ce) {
-      ++stats.candidatePairs;
-      const PairTest t = arithmetic.test(r.subject, se, r.clip, ce);
-      if (t.kind == PairTest::Kind::Crossing) {
-        r.crossings.push_back(t.crossing);
-      } else if (t.kind == PairTest::Kind::Degenerate) {
-        if (t.onOtherEdge & PairTest::kSubjectFrom) degenerateSubject.push_back(se);
-        if (t.onOtherEdge & PairTest::kSubjectTo) degenerateSubject.push_back(r.subject.next[se]);
-        if (t.onOtherEdge & PairTest::kClipFrom) degenerateClip.push_back(ce);
-        if (t.onOtherEdge & PairTest::kClipTo) degenerateClip.push_back(r.clip.next[ce]);
+Phase1Result findIntersections(Operand subject, Operand clip, const Search& search, const Arithmetic& arithmetic,
+                               Stats& stats, Degeneracies* degeneracies = nullptr) {
+  Phase1Result r{std::move(subject), std::move(clip), {}, {}, {}};
+  Degeneracies found;
+  search.forEachCandidate(r.subject, r.clip, [&](std::uint32_t se, std::uint32_t ce) {
+    ++stats.candidatePairs;
+    const PairTest t = arithmetic.test(r.subject, se, r.clip, ce);
+    if (t.kind == PairTest::Kind::Crossing) {
+      r.crossings.push_back(t.crossing);
+    } else if constexpr (Arithmetic::kReportsDegeneracies) {
+      if (t.kind == PairTest::Kind::Degenerate) {
+        if (t.onOtherEdge & PairTest::kSubjectFrom) found.subject.push_back(se);
+        if (t.onOtherEdge & PairTest::kSubjectTo) found.subject.push_back(r.subject.next[se]);
+        if (t.onOtherEdge & PairTest::kClipFrom) found.clip.push_back(ce);
+        if (t.onOtherEdge & PairTest::kClipTo) found.clip.push_back(r.clip.next[ce]);
       }
-    });
-    if (degenerateSubject.empty() && degenerateClip.empty()) break;
-    if (round + 1 >= kMaxPerturbationRounds) {
-      throw ClipFailure("degeneracies remain after " + std::to_string(kMaxPerturbationRounds) +
-                        " rounds of perturbation");
     }
-    for (auto* vs : {&degenerateSubject, &degenerateClip}) {
-      std::sort(vs->begin(), vs->end());
-      vs->erase(std::unique(vs->begin(), vs->end()), vs->end());
+  });
+  if constexpr (Arithmetic::kReportsDegeneracies) {
+    if (!found.empty()) {
+      for (auto* vs : {&found.subject, &found.clip}) {
+        std::sort(vs->begin(), vs->end());
+        vs->erase(std::unique(vs->begin(), vs->end()), vs->end());
+      }
+      if (degeneracies) *degeneracies = std::move(found);
+      return r;  // unordered: the caller must resolve the degeneracies first
     }
-    stats.perturbations += arithmetic.perturb(r.subject, r.clip, degenerateSubject,
-                                              degenerateClip, round);
-    ++stats.perturbationRounds;
   }
   stats.intersections = r.crossings.size();
 
@@ -92,18 +76,6 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
     if (const int c = arithmetic.compareAlongClip(cs[a], cs[b], r.subject, r.clip)) return c < 0;
     return cs[a].subjectEdge < cs[b].subjectEdge;
   });
-
-  r.subjectRingInside.resize(r.subject.ringCount());
-  for (std::size_t k = 0; k < r.subject.ringCount(); ++k) {
-    r.subjectRingInside[k] =
-        arithmetic.subjectVertexInsideClip(r.subject, r.subject.ringStart[k], r.clip);
-  }
-  r.clipRingInside.resize(r.clip.ringCount());
-  for (std::size_t k = 0; k < r.clip.ringCount(); ++k) {
-    r.clipRingInside[k] = arithmetic.clipVertexInsideSubject(r.clip, r.clip.ringStart[k], r.subject);
-  }
-  stats.filterFailures = exactFallbacks() - fallbacksBefore;
-  stats.exactConstructions = exactConstructions() - constructionsBefore;
   return r;
 }
 

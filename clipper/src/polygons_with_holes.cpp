@@ -6,41 +6,30 @@
 #include "ghclip/measure.h"
 #include "ghclip/validate.h"
 #include "operand.h"
-#include "orientation.h"
-#include "sweep_search.h"
+#include "predicates/even_odd_ray.h"
+#include "predicates/segment_meeting.h"
+#include "search/sweep_search.h"
 
 namespace gh {
 namespace {
 
-using detail::orientation;
 using detail::Sign;
 
-// Do closed segments ab and cd share any point? Exact.
-bool segmentsMeet(Point a, Point b, Point c, Point d) {
-  const Sign o1 = orientation(a, b, c), o2 = orientation(a, b, d);
-  const Sign o3 = orientation(c, d, a), o4 = orientation(c, d, b);
-  auto within = [](Point p, Point q, Point r) {  // r on line pq: inside the box of pq?
-    return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
-           r.y <= std::max(p.y, q.y);
-  };
-  if (o1 != o2 && o3 != o4 && o1 != Sign::Zero && o2 != Sign::Zero && o3 != Sign::Zero && o4 != Sign::Zero) {
-    return true;
-  }
-  return (o1 == Sign::Zero && within(a, b, c)) || (o2 == Sign::Zero && within(a, b, d)) ||
-         (o3 == Sign::Zero && within(c, d, a)) || (o4 == Sign::Zero && within(c, d, b));
+// Exact orientation; the conversion's fallbacks are not reported anywhere.
+Sign orientation(Point a, Point b, Point c) {
+  detail::ExactCounters counters;
+  return detail::orientation(a, b, c, counters);
 }
 
 // Exact even-odd test of p against one ring; p must not lie on the ring.
 bool insideRing(const Ring& ring, Point p) {
-  bool inside = false;
-  for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-    const Point a = ring[i], b = ring[(i + 1) % n];
-    if ((a.y > p.y) != (b.y > p.y)) {
-      const Sign o = orientation(a, b, p);
-      if ((b.y > a.y) ? o == Sign::Positive : o == Sign::Negative) inside = !inside;
-    }
-  }
-  return inside;
+  detail::ExactCounters counters;
+  return detail::insideByRay(
+      p,
+      [&ring](auto&& visit) {
+        for (std::size_t i = 0, n = ring.size(); i < n; ++i) visit(ring[i], ring[(i + 1) % n]);
+      },
+      counters);
 }
 
 // The orientation of a simple ring, exactly (its area in doubles underflows near 1e-300): the
@@ -97,7 +86,8 @@ PolygonsWithHoles toPolygonsWithHoles(const Region& input) {
       }
       return;
     }
-    if (segmentsMeet(a, b, c, d)) {
+    detail::ExactCounters counters;
+    if (detail::meeting(a, b, c, d, counters) != detail::Meeting::Disjoint) {
       refusal = ringOf[e] == ringOf[f]
                     ? "ring " + std::to_string(ringOf[e] + 1) + " touches or crosses itself near " + at(a)
                     : "rings " + std::to_string(ringOf[e] + 1) + " and " + std::to_string(ringOf[f] + 1) +

@@ -9,7 +9,7 @@ namespace {
 // crossing ids sorted by that edge and position along it; nodeOfCrossing receives the node index
 // of each crossing's copy in this operand.
 template <class EdgeOf>
-void appendOperand(const Operand& operand, const std::vector<char>& ringInside, const std::vector<Crossing>& crossings,
+void appendOperand(const Operand& operand, const std::vector<Crossing>& crossings,
                    const std::vector<std::uint32_t>& order, EdgeOf edgeOf, VertexGraph& g, std::vector<RingInfo>& rings,
                    std::vector<std::uint32_t>& ringOfNode, std::vector<std::uint32_t>& nodeOfCrossing) {
   std::size_t k = 0;  // position in `order`
@@ -31,7 +31,7 @@ void appendOperand(const Operand& operand, const std::vector<char>& ringInside, 
       g.nodes[n].next = n + 1 < stop ? n + 1 : head;
       g.nodes[n].prev = n > head ? n - 1 : stop - 1;
     }
-    rings.push_back({begin, end, stop > head ? head : kNone, ringInside[ring] != 0});
+    rings.push_back({begin, end, stop > head ? head : kNone, false});
   }
 }
 
@@ -81,32 +81,17 @@ VertexGraph buildVertexGraph(const Phase1Result& r) {
   g.nodes.reserve(2 * r.crossings.size());
   std::vector<std::uint32_t> inSubject(r.crossings.size()), inClip(r.crossings.size());
   appendOperand(
-      r.subject, r.subjectRingInside, r.crossings, r.subjectOrder, [](const Crossing& c) { return c.subjectEdge; }, g,
+      r.subject, r.crossings, r.subjectOrder, [](const Crossing& c) { return c.subjectEdge; }, g,
       g.subjectRings, g.subjectRingOfNode, inSubject);
   g.firstClipNode = static_cast<std::uint32_t>(g.nodes.size());
   appendOperand(
-      r.clip, r.clipRingInside, r.crossings, r.clipOrder, [](const Crossing& c) { return c.clipEdge; }, g, g.clipRings,
+      r.clip, r.crossings, r.clipOrder, [](const Crossing& c) { return c.clipEdge; }, g, g.clipRings,
       g.clipRingOfNode, inClip);
   for (std::size_t i = 0; i < r.crossings.size(); ++i) {
     g.nodes[inSubject[i]].neighbor = inClip[i];
     g.nodes[inClip[i]].neighbor = inSubject[i];
   }
   return g;
-}
-
-void markEntryExit(VertexGraph& g) {
-  for (const auto* rings : {&g.subjectRings, &g.clipRings}) {
-    for (const RingInfo& ring : *rings) {
-      if (ring.head == kNone) continue;
-      bool status = !ring.startsInside;  // entry when starting outside
-      std::uint32_t n = ring.head;
-      do {
-        g.nodes[n].entry = status;
-        status = !status;
-        n = g.nodes[n].next;
-      } while (n != ring.head);
-    }
-  }
 }
 
 }  // namespace gh::detail

@@ -4,7 +4,7 @@
 // entry/exit and visited flags. The paper also links the original vertices into those lists; here
 // they stay in the operand's arrays, and the original vertices between two consecutive
 // intersection vertices are a contiguous run of their ring, copied in phase 3. Phases 2 and 3 then
-// cost O(crossings + output) instead of O(input): what makes the sweep variant fast on large
+// cost O(crossings + output) instead of O(input): what makes the sweep fast on large
 // inputs with few crossings. Indices instead of pointers: one allocation, and a bad link is a
 // bounds error instead of a wild pointer.
 #pragma once
@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "phase1_intersections.h"
+#include "phase1_result.h"
 
 namespace gh::detail {
 
@@ -33,7 +33,7 @@ struct RingInfo {
   std::uint32_t firstVertex;  // the ring's vertices are [firstVertex, endVertex) of its operand
   std::uint32_t endVertex;
   std::uint32_t head;         // its first intersection vertex, kNone if it crosses nothing
-  bool startsInside;          // its first vertex is inside the other operand
+  bool startsInside;          // its first vertex is inside the other operand (set by phase 2)
 };
 
 struct VertexGraph {
@@ -58,12 +58,8 @@ struct VertexGraph {
   void appendRunBackward(std::uint32_t from, Ring& out) const;
 };
 
-// Builds the lists from phase 1's crossings, sorted along every edge. The graph refers to
-// phase1's operands, which must outlive it.
+// Builds the lists from phase 1's crossings, sorted along every edge; phase 2 then marks them.
+// The graph refers to phase1's operands, which must outlive it.
 VertexGraph buildVertexGraph(const Phase1Result& phase1);
-
-// Phase 2 (Figure 9): walk each ring's list from its first vertex, whose status comes from the
-// point-in-region test, and mark intersection vertices alternately entry and exit.
-void markEntryExit(VertexGraph& graph);
 
 }  // namespace gh::detail

@@ -16,7 +16,7 @@
 #include "ghclip/clip.h"
 #include "ghclip/measure.h"
 #include "ghoracle/exact_oracle.h"
-#include "ghoracle/peer.h"
+#include "ghpeers/peer.h"
 #include "ghoracle/sampling_oracle.h"
 #include "ghwork/generators.h"
 
@@ -34,8 +34,8 @@ inline const std::vector<work::Workload>& seededPool(const std::string& workload
   return p;
 }
 
-// Our variants by name ("naive", "sweep", "exact"; "exact-allpairs" forces all pairs) or a peer
-// ("clipper6", ...), on a pool of workloads: iteration i clips pool[i % size], as the paper
+// Our variants by the name of their combination of arithmetic and search (gh::parseOptions:
+// "naive", "sweep", "exact", "exact-allpairs", "exact-sweep") or a peer ("clipper6", ...), on a pool of workloads: iteration i clips pool[i % size], as the paper
 // averaged over fresh random polygons. Every answer of the last round through the pool is
 // checked (exact oracle for small inputs, sampling oracle otherwise).
 inline void runMethodOnPool(benchmark::State& state, const std::string& method, const std::vector<work::Workload>& pool,
@@ -57,10 +57,7 @@ inline void runMethodOnPool(benchmark::State& state, const std::string& method, 
       benchmark::DoNotOptimize(results[k].data());
     }
   } else {
-    Options o;
-    const auto dash = method.find('-');
-    o.variant = *parseVariant(method.substr(0, dash));
-    if (dash != std::string::npos) o.search = Search::AllPairs;
+    const Options o = *parseOptions(method);
     for (auto _ : state) {
       const std::size_t k = i++ % pool.size();
       results[k] = clip(pool[k].subject, pool[k].clip, op, o, &stats[k]);

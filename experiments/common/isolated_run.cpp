@@ -12,7 +12,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "ghoracle/peer.h"
+#include "ghpeers/peer.h"
 
 namespace gh::experiments {
 namespace {

@@ -1,7 +1,7 @@
 #include "judge.h"
 
 #include "ghclip/errors.h"
-#include "ghoracle/peer.h"
+#include "ghpeers/peer.h"
 
 namespace gh::experiments {
 

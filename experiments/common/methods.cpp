@@ -1,17 +1,15 @@
 #include "methods.h"
 
 #include "ghclip/clip.h"
-#include "ghoracle/peer.h"
+#include "ghpeers/peer.h"
 
 namespace gh::experiments {
 
 std::vector<Method> allMethods() {
   std::vector<Method> out;
   for (Variant v : {Variant::Naive, Variant::Sweep, Variant::Exact}) {
-    if (!isImplemented(v)) continue;
     out.push_back({std::string(name(v)), false, [v](const Region& s, const Region& c, Op op) {
-                     Options o;
-                     o.variant = v;
+                     Options o = optionsOf(v);
                      return gh::clip(s, c, op, o);
                    }});
   }

@@ -10,14 +10,14 @@ struct Stats {
   std::uint64_t clipVertices = 0;
   std::uint64_t candidatePairs = 0;   // edge pairs handed to the intersection test
   std::uint64_t intersections = 0;    // crossings inserted into both vertex lists
-  std::uint64_t perturbations = 0;    // vertices moved (naive/sweep) to break degeneracies
+  std::uint64_t perturbations = 0;    // vertices moved (paper arithmetic) to break degeneracies
   std::uint64_t perturbationRounds = 0;  // phase-1 restarts after perturbing
-  std::uint64_t filterFailures = 0;   // exact predicates that needed the exact fallback
-  std::uint64_t exactConstructions = 0;  // crossing points the exact variant rounded from rationals
+  std::uint64_t filterFailures = 0;   // exact predicates that needed rationals (any phase, clean-up too)
+  std::uint64_t exactConstructions = 0;  // crossing points the exact arithmetic rounded from rationals
   std::uint64_t outputRings = 0;
   std::uint64_t outputVertices = 0;
-  double phase1Seconds = 0;  // intersections (including perturbation rounds)
-  double phase2Seconds = 0;  // entry/exit marking
+  double phase1Seconds = 0;  // crossings found and ordered (including perturbation rounds)
+  double phase2Seconds = 0;  // vertex graph built, ring starts located, entry/exit marked
   double phase3Seconds = 0;  // tracing and output clean-up
 };
 

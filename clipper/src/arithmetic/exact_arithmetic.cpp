@@ -1,0 +1,102 @@
+#include "arithmetic/exact_arithmetic.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "predicates/construction.h"
+#include "predicates/orientation.h"
+#include "predicates/sos_predicates.h"
+
+namespace gh::detail {
+namespace {
+
+// The parameter t = w1 / (w1 - w2) along an edge whose endpoints have the determinants w1, w2
+// against the other edge's line (t is a crossing's position in the limit), with a certified bound
+// on its error: infinite when the determinants' bounds do not apply. Only called for crossing
+// edges, where the exact denominator is not 0.
+double certifiedRatio(FilteredDeterminant w1, FilteredDeterminant w2, double& err) {
+  constexpr double u = 0x1p-53;
+  const double d = w1.value - w2.value, inverse = 1 / d, t = w1.value * inverse;
+  const double ed = w1.bound + w2.bound + u * std::abs(d);
+  if (!(2 * ed <= std::abs(d)) || !std::isfinite(t)) {
+    err = std::numeric_limits<double>::infinity();
+    return t;
+  }
+  // |w1/d - t| <= (e1 + |t| ed) / (|d| - ed) <= 2 (e1 + |t| ed) / |d|, plus the roundings of 1/d
+  // and of the product; the last factor covers the rounding of this bound itself. (Loose by at
+  // most 2 against dividing by |d| - ed, and one division instead of three.)
+  err = (2 * (w1.bound + std::abs(t) * ed) * std::abs(inverse) + 3 * u * std::abs(t)) * (1 + 0x1p-20);
+  return t;
+}
+
+}  // namespace
+
+PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge, const Operand& clip,
+                               std::uint32_t clipEdge) const {
+  const Point p1 = subject.from(subjectEdge), p2 = subject.to(subjectEdge);
+  const Point q1 = clip.from(clipEdge), q2 = clip.to(clipEdge);
+  // Boxes of p and of q translated by (eps, eps^2): a tie on q's low side or p's high side
+  // separates them, a tie the other way round overlaps.
+  if (std::max(p1.x, p2.x) <= std::min(q1.x, q2.x) || std::max(q1.x, q2.x) < std::min(p1.x, p2.x) ||
+      std::max(p1.y, p2.y) <= std::min(q1.y, q2.y) || std::max(q1.y, q2.y) < std::min(p1.y, p2.y)) {
+    return {};
+  }
+  // Each determinant is evaluated once: its sign (filtered, exact when needed) decides the
+  // crossing, and its value and bound give the crossing's position along the edge.
+  const FilteredDeterminant dP1 = orientationDeterminant(q1, q2, p1), dP2 = orientationDeterminant(q1, q2, p2);
+  const Sign oP1 = orientation(dP1, q1, q2, p1, *counters_), oP2 = orientation(dP2, q1, q2, p2, *counters_);
+  if (sos::clipEdgeSide(oP1, q1, q2) == sos::clipEdgeSide(oP2, q1, q2)) return {};
+  const FilteredDeterminant dQ1 = orientationDeterminant(p1, p2, q1), dQ2 = orientationDeterminant(p1, p2, q2);
+  const Sign oQ1 = orientation(dQ1, p1, p2, q1, *counters_), oQ2 = orientation(dQ2, p1, p2, q2, *counters_);
+  if (sos::subjectEdgeSide(oQ1, p1, p2) == sos::subjectEdgeSide(oQ2, p1, p2)) return {};
+
+  PairTest t;
+  t.kind = PairTest::Kind::Crossing;
+  Crossing& x = t.crossing;
+  x.subjectEdge = subjectEdge;
+  x.clipEdge = clipEdge;
+  // Positions along both edges (the limit values) with certified error bounds: the sort orders
+  // most crossings by them and asks the exact predicate only when two intervals overlap. Where
+  // the limit is an input vertex, the position is exact.
+  x.alphaSubject = oP1 == Sign::Zero ? 0 : oP2 == Sign::Zero ? 1 : certifiedRatio(dP1, dP2, x.errSubject);
+  x.alphaClip = oQ1 == Sign::Zero ? 0 : oQ2 == Sign::Zero ? 1 : certifiedRatio(dQ1, dQ2, x.errClip);
+  // The point in the limit eps -> 0, once, from the original coordinates: that input vertex where
+  // the limit is one, else the crossing faithfully rounded (construction.h).
+  if (oP1 == Sign::Zero) {
+    x.point = p1;
+  } else if (oP2 == Sign::Zero) {
+    x.point = p2;
+  } else if (oQ1 == Sign::Zero) {
+    x.point = q1;
+  } else if (oQ2 == Sign::Zero) {
+    x.point = q2;
+  } else {
+    x.point = constructCrossing(p1, p2, q1, q2, *counters_);
+  }
+  return t;
+}
+
+int ExactArithmetic::exactlyAlongSubject(const Crossing& a, const Crossing& b, const Operand& subject,
+                                         const Operand& clip) const {
+  const std::uint32_t e = a.subjectEdge;
+  return sos::compareAlongSubject(subject.from(e), subject.to(e), clip.from(a.clipEdge), clip.to(a.clipEdge),
+                                  clip.from(b.clipEdge), clip.to(b.clipEdge), *counters_);
+}
+
+int ExactArithmetic::exactlyAlongClip(const Crossing& a, const Crossing& b, const Operand& subject,
+                                      const Operand& clip) const {
+  const std::uint32_t e = a.clipEdge;
+  return sos::compareAlongClip(clip.from(e), clip.to(e), subject.from(a.subjectEdge), subject.to(a.subjectEdge),
+                               subject.from(b.subjectEdge), subject.to(b.subjectEdge), *counters_);
+}
+
+bool ExactArithmetic::subjectVertexInsideClip(const Operand& subject, std::uint32_t v, const Operand& clip) const {
+  return sos::subjectPointInsideClip(subject.vertices[v], clip.vertices.data(), clip.next.data(), clip.size(), *counters_);
+}
+
+bool ExactArithmetic::clipVertexInsideSubject(const Operand& clip, std::uint32_t v, const Operand& subject) const {
+  return sos::clipPointInsideSubject(clip.vertices[v], subject.vertices.data(), subject.next.data(), subject.size(), *counters_);
+}
+
+}  // namespace gh::detail

@@ -1,0 +1,48 @@
+// The orientation predicate everything else is built from, exact: Shewchuk's stage-A filter
+// inline, then the filtered predicate (filtered_predicate.h), then GMP, counted.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "ghclip/region.h"
+#include "predicates/exact_counters.h"
+#include "predicates/sign.h"
+
+namespace gh::detail {
+
+// (b - a) x (c - a) evaluated in doubles, with Shewchuk's stage-A bound on its error:
+// |exact - value| <= bound, where bound = (3 + 16u) u (|left| + |right|) while nothing under- or
+// overflows, and infinity otherwise. Callers that need the determinant itself as well as its
+// sign (the exact policy's crossing parameters) evaluate it once.
+struct FilteredDeterminant {
+  double value;
+  double bound;
+};
+
+inline FilteredDeterminant orientationDeterminant(Point a, Point b, Point c) {
+  constexpr double kBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+  const double left = (b.x - a.x) * (c.y - a.y), right = (b.y - a.y) * (c.x - a.x);
+  const double sum = std::abs(left) + std::abs(right);
+  const bool safe = sum > 0x1p-900 && sum < 0x1p900;
+  return {left - right, safe ? kBound * sum : std::numeric_limits<double>::infinity()};
+}
+
+// The sign when stage A cannot decide: the filtered predicate, GMP if it must.
+Sign orientationExact(Point a, Point b, Point c, ExactCounters& counters);
+
+// Sign of (b - a) x (c - a): Positive when a, b, c turn counter-clockwise. Stage A is inline: it
+// decides almost every call.
+inline Sign orientation(FilteredDeterminant d, Point a, Point b, Point c, ExactCounters& counters) {
+  if (const auto s = certainSign(d.value, d.bound)) return *s;
+  return orientationExact(a, b, c, counters);
+}
+inline Sign orientation(Point a, Point b, Point c, ExactCounters& counters) {
+  return orientation(orientationDeterminant(a, b, c), a, b, c, counters);
+}
+
+// Sign of (b - a) x (d - c), the cross product of two edge directions (the turn from one
+// direction to the other).
+Sign crossSign(Point a, Point b, Point c, Point d, ExactCounters& counters);
+
+}  // namespace gh::detail

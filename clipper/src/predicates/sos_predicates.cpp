@@ -1,0 +1,105 @@
+#include "predicates/sos_predicates.h"
+
+#include "predicates/even_odd_ray.h"
+#include "predicates/filtered_predicate.h"
+#include "predicates/orientation.h"
+
+namespace gh::detail::sos {
+namespace {
+
+// Order of the crossings of line L (a1 -> a2) with lines M (m1, m2) and N (n1, n2) along L. The
+// parameter along L at the crossing with M expands as
+//   t_M = (A_M + bSign * my * eps + cSign * mx * eps^2) / D_M,
+//   A_M = cross(m2 - m1, a1 - m1), D_M = cross(m2 - m1, a1 - a2), (mx, my) = m2 - m1,
+// so (t_M - t_N) D_M D_N = F0 + bSign F1 eps + cSign F2 eps^2 with
+//   F0 = A_M D_N - A_N D_M,  F1 = my D_N - ny D_M,  F2 = mx D_N - nx D_M.
+template <class N>
+struct Terms {
+  N f0, f1, f2, dM, dN;
+};
+
+template <class N>
+Terms<N> terms(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2) {
+  // The explicit return type matters: with gmpxx, `auto` would return an expression template
+  // that refers to this lambda's parameters after they are gone.
+  auto cross = [](const N& ux, const N& uy, const N& vx, const N& vy) -> N { return ux * vy - uy * vx; };
+  const N mx = N(m2.x) - N(m1.x), my = N(m2.y) - N(m1.y);
+  const N nx = N(n2.x) - N(n1.x), ny = N(n2.y) - N(n1.y);
+  const N ax = N(a1.x) - N(a2.x), ay = N(a1.y) - N(a2.y);
+  const N aM = cross(mx, my, N(a1.x) - N(m1.x), N(a1.y) - N(m1.y));
+  const N aN = cross(nx, ny, N(a1.x) - N(n1.x), N(a1.y) - N(n1.y));
+  const N dM = cross(mx, my, ax, ay), dN = cross(nx, ny, ax, ay);
+  Terms<N> t;
+  t.f0 = aM * dN - aN * dM;
+  t.f1 = my * dN - ny * dM;
+  t.f2 = mx * dN - nx * dM;
+  t.dM = dM;
+  t.dN = dN;
+  return t;
+}
+
+// sign(t_M - t_N) with the expansion's sign conventions: bSign, cSign multiply the B and C terms.
+int compare(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2, int bSign, int cSign,
+            ExactCounters& counters) {
+  return filteredPredicate(
+      [&](auto numbers) -> std::optional<int> {
+        using N = typename decltype(numbers)::Number;
+        const Terms<N> t = terms<N>(a1, a2, m1, m2, n1, n2);
+        const auto sm = numbers.sign(t.dM), sn = numbers.sign(t.dN);
+        if (!sm || !sn) return std::nullopt;
+        // t_M - t_N = (F0 + bSign F1 eps + cSign F2 eps^2) / (D_M D_N): its leading term.
+        const int denominator = static_cast<int>(*sm) * static_cast<int>(*sn);
+        const std::pair<const N*, int> expansion[] = {{&t.f0, 1}, {&t.f1, bSign}, {&t.f2, cSign}};
+        for (const auto& [term, factor] : expansion) {
+          const auto s = numbers.sign(*term);
+          if (!s) return std::nullopt;
+          if (*s != Sign::Zero) return static_cast<int>(*s) * factor * denominator;
+        }
+        return 0;
+      },
+      counters);
+}
+
+}  // namespace
+
+int compareAlongSubject(Point p1, Point p2, Point q1, Point q2, Point r1, Point r2, ExactCounters& counters) {
+  // Parameter along p of the crossing with clip edge q: (O(q1,q2,p1) + dy_q eps - dx_q eps^2) / D_q
+  // with D_q = O(q1,q2,p1) - O(q1,q2,p2) = cross(q2 - q1, p1 - p2): B = +dy, C = -dx.
+  return compare(p1, p2, q1, q2, r1, r2, +1, -1, counters);
+}
+
+int compareAlongClip(Point q1, Point q2, Point p1, Point p2, Point s1, Point s2, ExactCounters& counters) {
+  // Parameter along q of the crossing with subject edge p: (O(p1,p2,q1) - dy_p eps + dx_p eps^2)
+  // / D_p with D_p = cross(p2 - p1, q1 - q2). O(p1,p2,q1) = cross(p2 - p1, q1 - p1) is the same
+  // cross product shape as along the subject edge, with the roles of the lines swapped: B = -dy,
+  // C = +dx.
+  return compare(q1, q2, p1, p2, s1, s2, -1, +1, counters);
+}
+
+namespace {
+
+auto edgesOf(const Point* v, const std::uint32_t* next, std::size_t n) {
+  return [v, next, n](auto&& visit) {
+    for (std::size_t e = 0; e < n; ++e) visit(v[e], v[next[e]]);
+  };
+}
+
+}  // namespace
+
+bool subjectPointInsideClip(Point p, const Point* v, const std::uint32_t* next, std::size_t n,
+                            ExactCounters& counters) {
+  // The clip is translated: a clip vertex q is above p's line iff q.y + eps^2 > p.y, i.e. q.y >= p.y.
+  return insideByRay(
+      edgesOf(v, next, n), [p](Point q) { return q.y >= p.y; },
+      [p, &counters](Point a, Point b) { return clipEdgeSide(orientation(a, b, p, counters), a, b); });
+}
+
+bool clipPointInsideSubject(Point q, const Point* v, const std::uint32_t* next, std::size_t n,
+                            ExactCounters& counters) {
+  // The point is translated: a subject vertex s is above iff s.y > q.y + eps^2, i.e. s.y > q.y.
+  return insideByRay(
+      edgesOf(v, next, n), [q](Point s) { return s.y > q.y; },
+      [q, &counters](Point a, Point b) { return subjectEdgeSide(orientation(a, b, q, counters), a, b); });
+}
+
+}  // namespace gh::detail::sos
