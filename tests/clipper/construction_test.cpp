@@ -1,7 +1,7 @@
-// The exact variant's only constructed points: every coordinate of a crossing must be a faithful
+// The exact arithmetic's only constructed points: every coordinate of a crossing must be a faithful
 // rounding of the exact one (strictly within one ulp), at every magnitude, subnormal and huge
 // included, and for nearly parallel segments.
-#include "construction.h"
+#include "predicates/construction.h"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -14,7 +14,14 @@
 namespace gh {
 namespace {
 
-using detail::constructCrossing;
+// The construction with a counter of exact constructions (thread-local: the tests are serial).
+detail::ExactCounters& counters() {
+  thread_local detail::ExactCounters c;
+  return c;
+}
+Point constructCrossing(Point p1, Point p2, Point q1, Point q2) {
+  return detail::constructCrossing(p1, p2, q1, q2, counters());
+}
 
 mpq_class q(double v) {
   return mpq_class(v);
@@ -43,7 +50,7 @@ std::string check(Point p1, Point p2, Point q1, Point q2) {
   const mpq_class x = q(p1.x) + t * (q(p2.x) - q(p1.x)), y = q(p1.y) + t * (q(p2.y) - q(p1.y));
   // Both compiled paths: the one this processor uses, and the one for processors without fma.
   for (const Point c : {constructCrossing(p1, p2, q1, q2),
-                        detail::constructCrossingWithoutFmaInstruction(p1, p2, q1, q2)}) {
+                        detail::constructCrossingWithoutFmaInstruction(p1, p2, q1, q2, counters())}) {
     if (!faithful(c.x, x)) return "x " + std::to_string(c.x) + " is not a faithful rounding";
     if (!faithful(c.y, y)) return "y " + std::to_string(c.y) + " is not a faithful rounding";
   }
@@ -100,7 +107,7 @@ TEST(Construction, CertifiedPathDecidesRandomCrossingsAtEveryScale) {
   for (const int scale : {0, -1000, -600, 400}) {
     std::mt19937_64 rng(20261122);  // its output is fixed by the standard, unlike distributions'
     auto unit = [&rng, scale] { return std::ldexp(static_cast<double>(rng() >> 11), -53 + scale); };
-    const std::uint64_t before = detail::exactConstructions();
+    const std::uint64_t before = counters().exactConstructions;
     int crossings = 0;
     while (crossings < 10000) {
       const Point p1{unit(), unit()}, p2{unit(), unit()}, q1{unit(), unit()}, q2{unit(), unit()};
@@ -108,7 +115,7 @@ TEST(Construction, CertifiedPathDecidesRandomCrossingsAtEveryScale) {
       ++crossings;
       ASSERT_EQ(check(p1, p2, q1, q2), "") << "scale 2^" << scale;
     }
-    EXPECT_LT(detail::exactConstructions() - before, 100u)
+    EXPECT_LT(counters().exactConstructions - before, 100u)
         << "at scale 2^" << scale << ", of " << crossings << " crossings took the exact path";
   }
 }

@@ -1,4 +1,6 @@
-// The exact predicates: the filter decides exact computations without GMP, the fallback agrees
+// The predicates (clipper/src/predicates/): error-free transforms, the filter's number type, the
+// one filtered-predicate helper, orientation, the SoS expansions, the one ray test and the one
+// segment-meeting test. The filter decides exact computations without GMP, the fallback agrees
 // with an independent rational computation, and the SoS expansions never return zero.
 #include <gtest/gtest.h>
 #include <gmpxx.h>
@@ -6,9 +8,14 @@
 
 #include <random>
 
-#include "approx.h"
-#include "orientation.h"
-#include "sos_predicates.h"
+#include "arithmetic/exact_arithmetic.h"
+#include "predicates/approx.h"
+#include "predicates/error_free.h"
+#include "predicates/even_odd_ray.h"
+#include "predicates/filtered_predicate.h"
+#include "predicates/orientation.h"
+#include "predicates/segment_meeting.h"
+#include "predicates/sos_predicates.h"
 
 namespace gh::detail {
 namespace {
@@ -18,72 +25,86 @@ int rationalOrientation(Point a, Point b, Point c) {
   return sgn(det);
 }
 
+mpq_class exactly(TwoTerm t) { return mpq_class(t.hi) + mpq_class(t.lo); }
+
+TEST(ErrorFree, TransformsAreExact) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1e6, 1e6);
+  for (int i = 0; i < 10000; ++i) {
+    const double a = u(rng) * std::ldexp(1.0, static_cast<int>(rng() % 200) - 100), b = u(rng);
+    ASSERT_EQ(exactly(twoSum(a, b)), mpq_class(a) + mpq_class(b));
+    ASSERT_EQ(exactly(twoDiff(a, b)), mpq_class(a) - mpq_class(b));
+    ASSERT_EQ(exactly(twoProduct(a, b)), mpq_class(a) * mpq_class(b));
+    ASSERT_EQ(exactly(twoProductBySplitting(a, b)), mpq_class(a) * mpq_class(b));
+  }
+}
+
 TEST(Approx, ExactComputationsCarryNoError) {
   const Approx d = (Approx(3) - Approx(1)) * (Approx(7) - Approx(2)) - Approx(10);
   EXPECT_EQ(d.e, 0);
-  EXPECT_EQ(certainSign(d), 0);  // a certain zero, no fallback needed
+  EXPECT_EQ(certainSign(d), Sign::Zero);  // a certain zero, no fallback needed
   const Approx t = Approx(0.1) * Approx(0.3);
   EXPECT_GT(t.e, 0);
-  EXPECT_EQ(certainSign(Approx(1e-300) * Approx(1e-300)), 2);  // underflow: undecided
+  EXPECT_EQ(certainSign(Approx(1e-300) * Approx(1e-300)), std::nullopt);  // underflow: undecided
+}
+
+TEST(CertainSign, DecidesOnlyWhatTheBoundDecides) {
+  EXPECT_EQ(certainSign(1.0, 0.5), Sign::Positive);
+  EXPECT_EQ(certainSign(-1.0, 0.5), Sign::Negative);
+  EXPECT_EQ(certainSign(0.0, 0.0), Sign::Zero);
+  EXPECT_EQ(certainSign(0.4, 0.5), std::nullopt);
+  EXPECT_EQ(certainSign(1.0, 1.0), std::nullopt);  // on the bound: the bound's own rounding
+  EXPECT_EQ(certainSign(1.0, INFINITY), std::nullopt);
+  EXPECT_EQ(certainSign(NAN, 1.0), std::nullopt);
+}
+
+// The helper runs the filter stage, and the exact stage only when a sign it needed was not
+// certain, counting it.
+TEST(FilteredPredicate, FallsBackOnlyWhenUncertainAndCounts) {
+  ExactCounters counters;
+  int stages = 0;
+  auto predicate = [&](double a, double b) {
+    return filteredPredicate(
+        [&](auto numbers) {
+          using N = typename decltype(numbers)::Number;
+          ++stages;
+          const N d = N(a) * N(b) - N(1);
+          return numbers.sign(d);
+        },
+        counters);
+  };
+  EXPECT_EQ(predicate(2, 3), Sign::Positive);
+  EXPECT_EQ(stages, 1);
+  EXPECT_EQ(counters.filterFailures, 0u);
+  // 1/3 rounded times 3 is 1 - 2^-54 exactly: tiny, but the filter's bound covers it.
+  EXPECT_EQ(predicate(1.0 / 3, 3), toSign(sgn(mpq_class(1.0 / 3) * 3 - 1)));
+  EXPECT_EQ(counters.filterFailures, 1u);
+  EXPECT_EQ(stages, 3);
 }
 
 // Near-collinear points on a 2^-43 grid around a line: the classic failure of double orientation.
 TEST(Orientation, AgreesWithRationalsOnNearCollinearFixtures) {
   std::mt19937_64 rng(7);
   std::uniform_int_distribution<int> k(-64, 64);
-  int fallbacks = 0;
+  ExactCounters counters;
   for (int i = 0; i < 20000; ++i) {
     const double h = std::ldexp(1.0, -43);
     const Point a{0.5 + k(rng) * h, 0.5 + k(rng) * h}, b{12 + k(rng) * h, 12 + k(rng) * h}, c{24 + k(rng) * h, 24 + k(rng) * h};
-    const std::uint64_t before = exactFallbacks();
-    EXPECT_EQ(static_cast<int>(orientation(a, b, c)), rationalOrientation(a, b, c)) << i;
-    fallbacks += static_cast<int>(exactFallbacks() - before);
+    EXPECT_EQ(static_cast<int>(orientation(a, b, c, counters)), rationalOrientation(a, b, c)) << i;
   }
-  EXPECT_GT(fallbacks, 0);  // the fixture does reach the exact stage
-}
-
-TEST(SoS, SidesAreNeverZero) {
-  const Point a{0, 0}, b{2, 0}, on{1, 0};
-  EXPECT_NE(sos::clipEdgeSide(a, b, on), Sign::Zero);
-  EXPECT_NE(sos::subjectEdgeSide(a, b, on), Sign::Zero);
-  EXPECT_NE(sos::clipEdgeSide(a, a == b ? b : Point{0, 2}, a), Sign::Zero);
-}
-
-TEST(SoS, IdenticalEdgesDoNotCrossButShiftedOnesDo) {
-  // Collinear overlapping edges never cross: the translated clip edge is parallel.
-  EXPECT_FALSE(sos::cross({0, 0}, {2, 0}, {0, 0}, {2, 0}));
-  EXPECT_FALSE(sos::cross({0, 0}, {2, 0}, {1, 0}, {3, 0}));
-  // A clip edge through a subject vertex crosses one of the two subject edges there, not both.
-  const bool first = sos::cross({0, -1}, {0, 0}, {-1, 0}, {1, 0});
-  const bool second = sos::cross({0, 0}, {0, 1}, {-1, 0}, {1, 0});
-  EXPECT_NE(first, second);
-}
-
-// Regression: the exact fallback of the ordering predicate crashed (a gmpxx expression template
-// returned from a lambda referred to the lambda's own parameters). The pentagram's tip lies
-// 6e-17 off the clip line x = 0, so the order along that line needs exact arithmetic.
-TEST(SoS, OrderingFallsBackToExactArithmeticSafely) {
-  const Point tip{6.123233995736766e-17, 1};
-  const Point left{-0.58778525229247325, -0.80901699437494734}, right{0.58778525229247303, -0.80901699437494756};
-  const Point q1{0, 2}, q2{0, -2};
-  const std::uint64_t before = exactFallbacks();
-  const int order = sos::compareAlongClip(q1, q2, tip, left, right, tip);
-  EXPECT_NE(order, 0);
-  EXPECT_EQ(order, -sos::compareAlongClip(q1, q2, right, tip, tip, left));
-  EXPECT_GE(exactFallbacks(), before);
-  // Two clip edges through one subject vertex are ordered along the subject edge, never tied.
-  EXPECT_NE(sos::compareAlongSubject({-1, 0}, {1, 0}, {0, -1}, {0, 0}, {0, 0}, {1, 1}), 0);
+  EXPECT_GT(counters.filterFailures, 0u);  // the fixture does reach the exact stage
 }
 
 // Found by the OGC conversion test at 2^-540: between 2^-900 and ~2^-537 the differences of
 // coordinates are "safe" for the filter but their products underflow to exactly 0, which the
 // running error bound took for an exact zero: orientation() said Zero for a plain right turn.
 TEST(Orientation, ProductsThatUnderflowToZeroAreNotExactZeros) {
+  ExactCounters c;
   for (int e : {-300, -540, -600, -700, -1000}) {
     const double s = std::ldexp(1.0, e);
-    EXPECT_EQ(orientation({4 * s, 4 * s}, {6 * s, 4 * s}, {6 * s, 6 * s}), Sign::Positive) << "2^" << e;
-    EXPECT_EQ(orientation({4 * s, 4 * s}, {6 * s, 6 * s}, {6 * s, 4 * s}), Sign::Negative) << "2^" << e;
-    EXPECT_EQ(orientation({4 * s, 4 * s}, {6 * s, 6 * s}, {8 * s, 8 * s}), Sign::Zero) << "2^" << e;
+    EXPECT_EQ(orientation({4 * s, 4 * s}, {6 * s, 4 * s}, {6 * s, 6 * s}, c), Sign::Positive) << "2^" << e;
+    EXPECT_EQ(orientation({4 * s, 4 * s}, {6 * s, 6 * s}, {6 * s, 4 * s}, c), Sign::Negative) << "2^" << e;
+    EXPECT_EQ(orientation({4 * s, 4 * s}, {6 * s, 6 * s}, {8 * s, 8 * s}, c), Sign::Zero) << "2^" << e;
   }
 }
 
@@ -96,7 +117,90 @@ RC_GTEST_PROP(Orientation, AgreesWithRationalsAtEveryScale, ()) {
   Point c{*coord, *coord};
   if (*rc::gen::arbitrary<bool>()) c = {a.x + 2 * (b.x - a.x), a.y + 2 * (b.y - a.y)};  // on the line ab
   RC_PRE(std::isfinite(c.x) && std::isfinite(c.y));
-  RC_ASSERT(static_cast<int>(orientation(a, b, c)) == rationalOrientation(a, b, c));
+  ExactCounters counters;
+  RC_ASSERT(static_cast<int>(orientation(a, b, c, counters)) == rationalOrientation(a, b, c));
+  RC_ASSERT(static_cast<int>(crossSign(a, b, a, c, counters)) == rationalOrientation(a, b, c));
+}
+
+TEST(SoS, SidesAreNeverZero) {
+  const Point a{0, 0}, b{2, 0}, vertical{0, 2};
+  EXPECT_NE(sos::clipEdgeSide(Sign::Zero, a, b), Sign::Zero);
+  EXPECT_NE(sos::subjectEdgeSide(Sign::Zero, a, b), Sign::Zero);
+  EXPECT_NE(sos::clipEdgeSide(Sign::Zero, a, vertical), Sign::Zero);
+  EXPECT_NE(sos::subjectEdgeSide(Sign::Zero, a, vertical), Sign::Zero);
+  // A nonzero sign is the sign: the eps terms only break ties.
+  EXPECT_EQ(sos::clipEdgeSide(Sign::Negative, a, b), Sign::Negative);
+}
+
+// The exact arithmetic's pair test under SoS: collinear overlapping edges never cross (the
+// translated clip edge is parallel), and a clip edge through a subject vertex crosses exactly one
+// of the two subject edges there.
+TEST(SoS, IdenticalEdgesDoNotCrossButShiftedOnesDo) {
+  ExactCounters counters;
+  const ExactArithmetic exact(counters);
+  auto crosses = [&](Point p1, Point p2, Point q1, Point q2) {
+    const Operand s({{p1, p2, {p1.x - 7, p1.y - 5}}}), c({{q1, q2, {q1.x + 11, q1.y - 13}}});
+    return exact.test(s, 0, c, 0).kind == PairTest::Kind::Crossing;
+  };
+  EXPECT_FALSE(crosses({0, 0}, {2, 0}, {0, 0}, {2, 0}));
+  EXPECT_FALSE(crosses({0, 0}, {2, 0}, {1, 0}, {3, 0}));
+  EXPECT_NE(crosses({0, -1}, {0, 0}, {-1, 0}, {1, 0}), crosses({0, 0}, {0, 1}, {-1, 0}, {1, 0}));
+}
+
+// Regression: the exact fallback of the ordering predicate crashed (a gmpxx expression template
+// returned from a lambda referred to the lambda's own parameters). The pentagram's tip lies
+// 6e-17 off the clip line x = 0, so the order along that line needs exact arithmetic.
+TEST(SoS, OrderingFallsBackToExactArithmeticSafely) {
+  ExactCounters counters;
+  const Point tip{6.123233995736766e-17, 1};
+  const Point left{-0.58778525229247325, -0.80901699437494734}, right{0.58778525229247303, -0.80901699437494756};
+  const Point q1{0, 2}, q2{0, -2};
+  const int order = sos::compareAlongClip(q1, q2, tip, left, right, tip, counters);
+  EXPECT_NE(order, 0);
+  EXPECT_EQ(order, -sos::compareAlongClip(q1, q2, right, tip, tip, left, counters));
+  EXPECT_GT(counters.filterFailures, 0u);
+  // Two clip edges through one subject vertex are ordered along the subject edge, never tied.
+  EXPECT_NE(sos::compareAlongSubject({-1, 0}, {1, 0}, {0, -1}, {0, 0}, {0, 0}, {1, 1}, counters), 0);
+}
+
+// The one ray test: a vertex on the ray's line counts on one side only, so a ray through a vertex
+// is counted once; with the SoS rules a point on an edge is decided consistently (the clip moved
+// up and right).
+TEST(EvenOddRay, VerticesOnTheRayCountOnce) {
+  ExactCounters counters;
+  const Ring diamond{{0, -1}, {1, 0}, {0, 1}, {-1, 0}};  // vertices (1,0), (-1,0) on the ray of (0,0)
+  auto edges = [&diamond](auto&& visit) {
+    for (std::size_t i = 0; i < diamond.size(); ++i) visit(diamond[i], diamond[(i + 1) % diamond.size()]);
+  };
+  EXPECT_TRUE(insideByRay(Point{0, 0}, edges, counters));
+  EXPECT_FALSE(insideByRay(Point{2, 0}, edges, counters));
+  EXPECT_FALSE(insideByRay(Point{-2, 0}, edges, counters));
+  const Point v[] = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  const std::uint32_t next[] = {1, 2, 3, 0};
+  // A subject point on the clip's edges, the clip moved up and right: below its bottom edge and
+  // left of its left edge it is outside; on its top and right edges, inside.
+  EXPECT_FALSE(sos::subjectPointInsideClip({1, 0}, v, next, 4, counters));
+  EXPECT_FALSE(sos::subjectPointInsideClip({0, 1}, v, next, 4, counters));
+  EXPECT_TRUE(sos::subjectPointInsideClip({1, 2}, v, next, 4, counters));
+  EXPECT_TRUE(sos::subjectPointInsideClip({2, 1}, v, next, 4, counters));
+  // A clip point on the subject's bottom edge, moved up: inside; on its top edge: outside.
+  EXPECT_TRUE(sos::clipPointInsideSubject({1, 0}, v, next, 4, counters));
+  EXPECT_FALSE(sos::clipPointInsideSubject({1, 2}, v, next, 4, counters));
+  // On the left edge, moved right: inside; on the right edge: outside.
+  EXPECT_TRUE(sos::clipPointInsideSubject({0, 1}, v, next, 4, counters));
+  EXPECT_FALSE(sos::clipPointInsideSubject({2, 1}, v, next, 4, counters));
+}
+
+TEST(SegmentMeeting, EveryKindOfContact) {
+  ExactCounters c;
+  EXPECT_EQ(meeting({0, 0}, {2, 2}, {0, 2}, {2, 0}, c), Meeting::Crossing);
+  EXPECT_EQ(meeting({0, 0}, {2, 2}, {3, 0}, {3, 3}, c), Meeting::Disjoint);
+  EXPECT_EQ(meeting({0, 0}, {2, 0}, {1, 0}, {1, 1}, c), Meeting::Touching);  // endpoint on the other
+  EXPECT_EQ(meeting({0, 0}, {2, 0}, {2, 0}, {3, 1}, c), Meeting::Touching);  // shared endpoint
+  EXPECT_EQ(meeting({0, 0}, {2, 0}, {1, 0}, {3, 0}, c), Meeting::Touching);  // collinear overlap
+  EXPECT_EQ(meeting({0, 0}, {1, 0}, {2, 0}, {3, 0}, c), Meeting::Disjoint);  // collinear, apart
+  // 2^-60 above an edge is not on it.
+  EXPECT_EQ(meeting({0, 0}, {1, 0}, {0.5, std::ldexp(1.0, -60)}, {0.5, 1}, c), Meeting::Disjoint);
 }
 
 }  // namespace

@@ -1,20 +1,23 @@
-// The sweep search reports every pair the all-pairs search would decide, so with the same
-// arithmetic policy phase 1 finds the same crossings (same edges, same alpha values, same points,
-// same order along every edge), the same perturbations and the same ring classification: bit for
-// bit, on every workload. Checked by RapidCheck over workload names, sizes and seeds.
+// The candidate searches (clipper/src/search/): the sweep reports every pair whose boxes overlap,
+// so with the same arithmetic policy phase 1 finds the same crossings (same edges, same alpha
+// values, same points, same order along every edge) and the same perturbations as with all pairs:
+// bit for bit, on every workload, for both arithmetics. Checked by RapidCheck over workload
+// names, sizes and seeds.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <cstring>
 
-#include "all_pairs_search.h"
+#include "arithmetic/exact_arithmetic.h"
+#include "arithmetic/paper_arithmetic.h"
 #include "ghclip/clip.h"
 #include "ghclip/errors.h"
 #include "ghclip/validate.h"
 #include "ghwork/generators.h"
-#include "naive_arithmetic.h"
+#include "paper_perturbation.h"
 #include "phase1_intersections.h"
-#include "sweep_search.h"
+#include "search/all_pairs_search.h"
+#include "search/sweep_search.h"
 
 namespace gh {
 namespace {
@@ -38,9 +41,6 @@ std::string difference(const Phase1Result& a, const Phase1Result& b) {
     if (a.crossings[a.clipOrder[k]].subjectEdge != b.crossings[b.clipOrder[k]].subjectEdge) {
       return "order along the clip differs";
     }
-  }
-  if (a.subjectRingInside != b.subjectRingInside || a.clipRingInside != b.clipRingInside) {
-    return "ring classification differs";
   }
   for (std::size_t v = 0; v < a.subject.size(); ++v) {
     if (!sameBits(a.subject.vertices[v].x, b.subject.vertices[v].x) ||
@@ -67,14 +67,16 @@ RC_GTEST_PROP(SweepEquivalence, SameCrossingsAsAllPairsOnEveryWorkload, ()) {
   const Region s = normalized(w.subject, OnBadRing::Drop), c = normalized(w.clip, OnBadRing::Drop);
   Stats sa, sb;
   std::string failA, failB;
-  Phase1Result a{Operand({}), Operand({}), {}, {}, {}, {}, {}}, b = a;
+  Phase1Result a{Operand({}), Operand({}), {}, {}, {}}, b = a;
+  ExactCounters counters;
+  const PaperArithmetic paper(counters);
   try {
-    a = findIntersections(Operand(s), Operand(c), AllPairsSearch{}, NaiveArithmetic{}, sa);
+    a = findIntersectionsPerturbed(Operand(s), Operand(c), AllPairsSearch{}, paper, sa);
   } catch (const ClipFailure& e) {
     failA = e.what();
   }
   try {
-    b = findIntersections(Operand(s), Operand(c), SweepSearch{}, NaiveArithmetic{}, sb);
+    b = findIntersectionsPerturbed(Operand(s), Operand(c), SweepSearch{}, paper, sb);
   } catch (const ClipFailure& e) {
     failB = e.what();
   }
@@ -83,6 +85,11 @@ RC_GTEST_PROP(SweepEquivalence, SameCrossingsAsAllPairsOnEveryWorkload, ()) {
   RC_ASSERT(sa.perturbationRounds == sb.perturbationRounds);
   RC_ASSERT(sb.candidatePairs <= sa.candidatePairs);
   RC_ASSERT(difference(a, b) == "");
+  // The exact arithmetic: no perturbation, the same crossings either way.
+  const ExactArithmetic exact(counters);
+  Stats ea, eb;
+  RC_ASSERT(difference(findIntersections(Operand(s), Operand(c), AllPairsSearch{}, exact, ea),
+                       findIntersections(Operand(s), Operand(c), SweepSearch{}, exact, eb)) == "");
 }
 
 // Large realistic inputs, where the sweep's chains matter: same crossings, far fewer pairs.
@@ -90,8 +97,10 @@ TEST(SweepEquivalence, RealisticInputsOfTenThousandVertices) {
   for (const char* name : {"circles", "coastline"}) {
     const work::Workload w = work::generate(name, 10000, 7);
     Stats sa, sb;
-    const auto a = findIntersections(Operand(w.subject), Operand(w.clip), AllPairsSearch{}, NaiveArithmetic{}, sa);
-    const auto b = findIntersections(Operand(w.subject), Operand(w.clip), SweepSearch{}, NaiveArithmetic{}, sb);
+    ExactCounters counters;
+    const PaperArithmetic paper(counters);
+    const auto a = findIntersectionsPerturbed(Operand(w.subject), Operand(w.clip), AllPairsSearch{}, paper, sa);
+    const auto b = findIntersectionsPerturbed(Operand(w.subject), Operand(w.clip), SweepSearch{}, paper, sb);
     EXPECT_EQ(difference(a, b), "") << name;
     EXPECT_GT(a.crossings.size(), 0u) << name;
     EXPECT_LT(sb.candidatePairs * 100, sa.candidatePairs) << name;

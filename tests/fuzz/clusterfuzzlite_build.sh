@@ -4,7 +4,7 @@
 # ASan, then runs every built target briefly on its seed corpus. Needs clang and zip (./harness
 # installs both). Slow (a full clang build with CGAL): run by hand, not under ctest.
 set -euo pipefail
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 mkdir -p "$TMP/src" "$TMP/out" "$TMP/work"

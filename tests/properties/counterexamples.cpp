@@ -65,8 +65,7 @@ fs::path writeCounterexample(const Counterexample& c) {
   Region result;
   std::string label = std::string(name(c.input.op)) + " by " + c.variant;
   try {
-    Options o;
-    o.variant = *parseVariant(c.variant);
+    Options o = optionsOf(*parseVariant(c.variant));
     result = clip(c.input.subject, c.input.clip, c.input.op, o);
   } catch (const std::exception& e) {
     label += " (failed: " + std::string(e.what()) + ")";

@@ -19,8 +19,7 @@ struct Clipped {
 };
 
 Clipped run(const Region& s, const Region& c, Op op, Variant v) {
-  Options o;
-  o.variant = v;
+  Options o = optionsOf(v);
   try {
     return {clip(s, c, op, o), std::nullopt};
   } catch (const ClipFailure& e) {

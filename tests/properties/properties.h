@@ -10,6 +10,7 @@
 
 #include "generators.h"
 #include "ghclip/operation.h"
+#include "ghclip/options.h"
 #include "property_case.h"
 
 namespace gh::props {

@@ -92,7 +92,7 @@ TEST_P(BitsetSuite, ResultsEqualTheBitwiseAnswerExactly) {
 std::vector<Variant> variants() {
   std::vector<Variant> out;
   for (Variant v : {Variant::Naive, Variant::Sweep, Variant::Exact}) {
-    if (isImplemented(v)) out.push_back(v);
+    out.push_back(v);
   }
   return out;
 }

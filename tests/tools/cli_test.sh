@@ -57,6 +57,23 @@ check "geojson output" grep -q '"type":"MultiPolygon"' "$TMP/u.json"
 "$BIN/ghclip" --op xor "$TMP/r.wkt" "$TMP/r.wkt" >/dev/null
 check "result reads back" test $? -eq 0
 
+# Exact by default: a region minus itself is empty, exactly, with no --variant; the paper's
+# arithmetic (named) leaves a sliver. The two axes can be given on their own, not with --variant.
+"$BIN/ghclip" --op difference "$EX/square.geojson" "$EX/square.geojson" -o "$TMP/self.wkt" --stats >"$TMP/self.json"
+check "A \\ A by default: exit 0" test $? -eq 0
+check "A \\ A by default: no coordinates" test -z "$(grep '[0-9]' "$TMP/self.wkt")"
+check "A \\ A by default: stats say exact" grep -q '"variant":"exact"' "$TMP/self.json"
+"$BIN/ghclip" --op difference --variant naive "$EX/square.geojson" "$EX/square.geojson" -o "$TMP/self-naive.wkt"
+check "A \\ A with --variant naive: a sliver" grep -q '[0-9]' "$TMP/self-naive.wkt"
+"$BIN/ghclip" --op union --arithmetic paper --search sweep "$EX/square.geojson" "$EX/gate.geojson" -o "$TMP/ps.wkt" \
+  --stats >"$TMP/ps.json"
+check "--arithmetic paper --search sweep is the sweep variant" grep -q '"variant":"sweep"' "$TMP/ps.json"
+"$BIN/ghclip" --op union --variant naive --arithmetic exact "$EX/square.geojson" "$EX/gate.geojson" 2>"$TMP/both.err" >/dev/null
+check "--variant with --arithmetic: exit 2" test $? -eq 2
+check "--variant with --arithmetic: one line" test "$(wc -l <"$TMP/both.err")" -eq 1
+"$BIN/ghclip" --op union --search diagonal "$EX/square.geojson" "$EX/gate.geojson" 2>/dev/null >/dev/null
+check "unknown --search: exit 2" test $? -eq 2
+
 # ghcheck: pass (0), fail (1), bad input (2); --expected writes the exact answer.
 "$BIN/ghcheck" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/r.wkt" >"$TMP/v.txt"
 check "ghcheck passes ghclip's answer" test $? -eq 0

@@ -1,0 +1,122 @@
+// Output clean-up (cleanup.h): repeated points, spike tips and zero-area rings go, seams between
+// rings that only touch are dissolved, and none of it changes the even-odd interior. Every
+// decision is exact: the turns where seams are chained again included.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "cleanup.h"
+#include "ghclip/measure.h"
+#include "ghoracle/exact_oracle.h"
+
+namespace gh::detail {
+namespace {
+
+Ring rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+
+Region clean(const Region& r, bool dissolve = false) {
+  ExactCounters counters;
+  return cleanedUp(r, dissolve, counters);
+}
+
+// The exact oracle, as an identity check: a clean-up must leave the interior exactly as it was.
+bool sameInterior(const Region& a, const Region& b) {
+  return oracle::exactCheck(a, {}, Op::Union, b, {false, false, true}).errorAreaExact == "0";
+}
+
+TEST(CleanUp, DropsRepeatedPointsAndSpikeTips) {
+  // A square with a repeated corner and a spike poking out of its top edge (2,2) -> (2,5) -> (2,2).
+  const Region messy{{{0, 0}, {4, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 5}, {2, 2}, {0, 2}}};
+  const Region r = clean(messy);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0], (Ring{{0, 0}, {4, 0}, {4, 2}, {2, 2}, {0, 2}}));
+  EXPECT_TRUE(sameInterior(messy, r));
+}
+
+TEST(CleanUp, DropsSpikesThatOnlyAppearOnceOthersAreGone) {
+  // A B C B A hanging off a triangle: C goes, then B, then the repeated A.
+  const Region messy{{{0, 0}, {4, 0}, {4, 4}, {6, 6}, {8, 8}, {6, 6}, {4, 4}}};
+  const Region r = clean(messy);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0], (Ring{{0, 0}, {4, 0}, {4, 4}}));
+  // Across the ring's seam too: the spike's tip is the first point, (0,0) -> (6,0) -> (4,0).
+  const Region seam{{{6, 0}, {4, 0}, {4, 4}, {0, 0}}};
+  EXPECT_EQ(clean(seam)[0], (Ring{{4, 0}, {4, 4}, {0, 0}}));
+}
+
+TEST(CleanUp, DropsRingsOfZeroArea) {
+  const Region r = clean({{{0, 0}, {1, 1}, {3, 3}}, {{0, 0}, {2, 0}, {0, 0}, {2, 0}}, rect(0, 0, 1, 1)});
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0], rect(0, 0, 1, 1));
+}
+
+// A triple one subnormal off its line is a real turn, not a spike or a straight vertex: decided
+// exactly, by rational arithmetic (the products underflow), and counted.
+TEST(CleanUp, KeepsTurnsOneUlpOffTheLineAndCountsTheFallbacks) {
+  const double y = std::numeric_limits<double>::denorm_min();
+  const Region thin{{{0, 0}, {1, y}, {2, 0}, {1, 1}}};
+  ExactCounters counters;
+  EXPECT_EQ(cleanedUp(thin, true, counters)[0].size(), 4u);
+  EXPECT_GT(counters.filterFailures, 0u);
+}
+
+TEST(CleanUp, DissolvesTheSeamOfSquaresSharingAnEdge) {
+  // What the exact arithmetic's limit leaves for the union of [0,1]^2 and [1,2]x[0,1]: two rings
+  // running along x = 1 in opposite directions.
+  const Region touching{rect(0, 0, 1, 1), rect(1, 0, 2, 1)};
+  const Region r = clean(touching, true);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].size(), 4u);  // the 2 x 1 rectangle, straight vertices dropped
+  EXPECT_DOUBLE_EQ(evenOddArea(r), 2);
+  EXPECT_TRUE(sameInterior(touching, r));
+  // Without dissolving, the rings stay as they are.
+  EXPECT_EQ(clean(touching, false).size(), 2u);
+}
+
+TEST(CleanUp, DissolvesPartialOverlapsSplitAtEachOthersEndpoints) {
+  // [0,1]^2 against [1,2]x[0,2]: they share the corner (1,0), and the shared part of x = 1 is y
+  // in [0,1] only: the longer edge is cut at (1,1).
+  const Region touching{rect(0, 0, 1, 1), rect(1, 0, 2, 2)};
+  const Region r = clean(touching, true);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].size(), 6u);
+  EXPECT_TRUE(sameInterior(touching, r));
+}
+
+// Seams are looked for only where the rings share a vertex (the cheap trigger): rings that touch
+// along a T-junction alone keep their seam. Their even-odd interior is right either way.
+TEST(CleanUp, LeavesSeamsWithoutASharedVertex) {
+  const Region touching{rect(0, 0, 1, 1), rect(1, -1, 2, 2)};
+  const Region r = clean(touching, true);
+  EXPECT_EQ(r.size(), 2u);
+  EXPECT_TRUE(sameInterior(touching, r));
+}
+
+// At a vertex with several ways on, the chain takes the sharpest right turn: two counter-clockwise
+// squares touching at a corner come out as one ring through it, which bounds the same interior.
+TEST(CleanUp, ChainsThroughAVertexByTheSharpestRightTurn) {
+  const Region corner{rect(0, 0, 1, 1), rect(1, 1, 2, 2)};
+  const Region r = clean(corner, true);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].size(), 8u);
+  EXPECT_TRUE(sameInterior(corner, r));
+}
+
+// Two triangles share the vertex O; arriving at O from U, the chain has two ways on, towards
+// A = (1, -14) and towards B, one ulp of x from A: B's direction is 14 * 2^-53 clockwise of A's,
+// the sharper right turn. Their angles are the same double (asserted below), so a choice by
+// atan2 ties and takes whichever comes first; the exact choice takes B, and the chain runs
+// through both triangles.
+TEST(CleanUp, ChainsSeamsByExactTurns) {
+  const Point o{0, 0}, u{8, -6}, a{1, -14}, b{1 - 0x1p-53, -14}, v{-8, -6};
+  ASSERT_EQ(std::atan2(a.y, a.x), std::atan2(b.y, b.x));  // beyond what angles in doubles see
+  const Region touching{{u, o, a}, {v, o, b}};
+  const Region r = clean(touching, true);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0], (Ring{u, o, b, v, o, a}));
+  EXPECT_TRUE(sameInterior(touching, r));
+}
+
+}  // namespace
+}  // namespace gh::detail
