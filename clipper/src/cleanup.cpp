@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cstring>
-#include <map>
+#include <cmath>
+#include <memory>
+#include <unordered_map>
 
 #include "operand.h"
 #include "predicates/orientation.h"
-#include "search/sweep_search.h"
 
 namespace gh::detail {
 namespace {
@@ -14,10 +15,12 @@ namespace {
 struct PointLess {
   bool operator()(const Point& a, const Point& b) const { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 };
+// Equal points hash alike: -0.0 and 0.0 compare equal, so both hash as 0.0.
 struct PointHash {
   std::size_t operator()(const Point& p) const {
+    const double px = p.x + 0.0, py = p.y + 0.0;
     std::uint64_t x, y;
-    std::memcpy(&x, &p.x, 8), std::memcpy(&y, &p.y, 8);
+    std::memcpy(&x, &px, 8), std::memcpy(&y, &py, 8);
     std::uint64_t h = (x ^ (y * 0x9E3779B97F4A7C15ull)) * 0xBF58476D1CE4E5B9ull;
     return static_cast<std::size_t>(h ^ (h >> 31));
   }
@@ -146,6 +149,105 @@ bool anyVertexRepeats(const Region& region) {
   return false;
 }
 
+// Distinct points numbered in order of first appearance (open addressing; equal points, -0.0 and
+// 0.0 included, get one number).
+class PointNumbers {
+ public:
+  explicit PointNumbers(std::size_t expected) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * expected) capacity *= 2;
+    slots_.assign(capacity, kEmpty);
+  }
+  std::uint32_t number(Point p) {
+    for (std::size_t i = PointHash()(p) & (slots_.size() - 1);; i = (i + 1) & (slots_.size() - 1)) {
+      if (slots_[i] == kEmpty) {
+        slots_[i] = static_cast<std::uint32_t>(points_.size());
+        points_.push_back(p);
+        return slots_[i];
+      }
+      if (points_[slots_[i]] == p) return slots_[i];
+    }
+  }
+  std::size_t size() const { return points_.size(); }
+  Point point(std::uint32_t k) const { return points_[k]; }
+
+ private:
+  static constexpr std::uint32_t kEmpty = 0xffffffffu;
+  std::vector<std::uint32_t> slots_;
+  std::vector<Point> points_;
+};
+
+// Lists in compressed rows: row r holds items[start[r] .. start[r + 1]) in the order added.
+struct Rows {
+  std::vector<std::uint32_t> start, items;
+  template <class ForEach>  // forEach(add) calls add(row, item) for every item, twice the same way
+  Rows(std::size_t rows, ForEach forEach) : start(rows + 1, 0) {
+    forEach([this](std::uint32_t row, std::uint32_t) { ++start[row + 1]; });
+    for (std::size_t r = 0; r < rows; ++r) start[r + 1] += start[r];
+    items.resize(start[rows]);
+    std::vector<std::uint32_t> at(start.begin(), start.end() - 1);
+    forEach([&](std::uint32_t row, std::uint32_t item) { items[at[row]++] = item; });
+  }
+  const std::uint32_t* begin(std::uint32_t r) const { return items.data() + start[r]; }
+  const std::uint32_t* end(std::uint32_t r) const { return items.data() + start[r + 1]; }
+};
+
+// A uniform grid over the edges' bounding boxes: each edge is listed in every cell its closed box
+// meets, so the edges whose box holds a point are among those of the point's cell. The cell size
+// follows the edges' mean extent, coarsened until no edge is listed in too many cells in all.
+class EdgeGrid {
+ public:
+  explicit EdgeGrid(const Operand& op) {
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    for (const Point& p : op.vertices) x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    x0_ = x0, y0_ = y0;
+    const double n = static_cast<double>(std::max<std::size_t>(op.size(), 1));
+    for (int side = static_cast<int>(std::min(2048.0, std::ceil(std::sqrt(n / 2)))); side >= 1; side /= 2) {
+      side_ = static_cast<std::uint32_t>(side);
+      cellW_ = (x1 - x0) / side, cellH_ = (y1 - y0) / side;
+      if (!(cellW_ > 0) || !(cellH_ > 0) || !std::isfinite(cellW_) || !std::isfinite(cellH_)) {
+        side_ = 1, cellW_ = cellH_ = INFINITY;
+        break;
+      }
+      std::size_t listed = 0;
+      for (std::uint32_t e = 0; e < op.size(); ++e) {
+        const Point a = op.from(e), b = op.to(e);
+        listed += (cellX(std::max(a.x, b.x)) - cellX(std::min(a.x, b.x)) + 1) *
+                  std::size_t{cellY(std::max(a.y, b.y)) - cellY(std::min(a.y, b.y)) + 1};
+        if (listed > 16 * op.size()) break;
+      }
+      if (listed <= 16 * op.size()) break;
+    }
+    rows_ = std::make_unique<Rows>(std::size_t{side_} * side_, [&](auto&& add) {
+      for (std::uint32_t e = 0; e < op.size(); ++e) {
+        const Point a = op.from(e), b = op.to(e);
+        for (std::uint32_t cy = cellY(std::min(a.y, b.y)); cy <= cellY(std::max(a.y, b.y)); ++cy) {
+          for (std::uint32_t cx = cellX(std::min(a.x, b.x)); cx <= cellX(std::max(a.x, b.x)); ++cx) {
+            add(cy * side_ + cx, e);
+          }
+        }
+      }
+    });
+  }
+  // The edges listed in the cell of p.
+  std::pair<const std::uint32_t*, const std::uint32_t*> near(Point p) const {
+    const std::uint32_t c = cellY(p.y) * side_ + cellX(p.x);
+    return {rows_->begin(c), rows_->end(c)};
+  }
+
+ private:
+  // Monotone in the coordinate, so a box [lo, hi] meets every cell of a point inside it.
+  std::uint32_t cellX(double x) const { return cell((x - x0_) / cellW_); }
+  std::uint32_t cellY(double y) const { return cell((y - y0_) / cellH_); }
+  std::uint32_t cell(double t) const {
+    if (!(t > 0)) return 0;  // also NaN: 0 / infinity
+    return static_cast<std::uint32_t>(std::min(std::floor(t), static_cast<double>(side_ - 1)));
+  }
+  double x0_ = 0, y0_ = 0, cellW_ = 1, cellH_ = 1;
+  std::uint32_t side_ = 1;
+  std::unique_ptr<Rows> rows_;
+};
+
 // Zero-width seams: two rings of the answer running along the same segment in opposite
 // directions (the exact arithmetic's limit leaves them between regions that only touch, like two
 // squares sharing an edge). Each pair bounds nothing: split collinear overlaps at each other's
@@ -153,26 +255,42 @@ bool anyVertexRepeats(const Region& region) {
 // two squares sharing an edge is one rectangle.
 Region CleanUp::dissolveSeams(const Region& region) const {
   const Operand op(region);
-  std::vector<std::vector<Point>> cuts(op.size());
-  SweepSearch{}.forEachCandidate(op, op, [&](std::uint32_t e, std::uint32_t f) {
-    if (e >= f) return;
-    const Point a = op.from(e), b = op.to(e), c = op.from(f), d = op.to(f);
-    if (orientation(a, b, c, counters_) != Sign::Zero || orientation(a, b, d, counters_) != Sign::Zero) return;
-    auto strictlyInside = [](Point p, Point q, Point r) {  // r strictly between p and q (collinear)
-      return PointLess()(std::min(p, q, PointLess()), r) && PointLess()(r, std::max(p, q, PointLess()));
-    };
-    for (Point x : {c, d}) {
-      if (strictlyInside(a, b, x)) cuts[e].push_back(x);
-    }
-    for (Point x : {a, b}) {
-      if (strictlyInside(c, d, x)) cuts[f].push_back(x);
-    }
+  auto strictlyInside = [](Point p, Point q, Point r) {  // r strictly between p and q (collinear)
+    return PointLess()(std::min(p, q, PointLess()), r) && PointLess()(r, std::max(p, q, PointLess()));
+  };
+  // The endpoints of every edge, numbered, and the edges at each.
+  PointNumbers numbers(op.size());
+  std::vector<std::uint32_t> fromNumber(op.size()), toNumber(op.size());
+  for (std::uint32_t e = 0; e < op.size(); ++e) fromNumber[e] = numbers.number(op.from(e));
+  for (std::uint32_t e = 0; e < op.size(); ++e) toNumber[e] = numbers.number(op.to(e));
+  const Rows edgesAt(numbers.size(), [&](auto&& add) {
+    for (std::uint32_t e = 0; e < op.size(); ++e) add(fromNumber[e], e), add(toNumber[e], e);
   });
-  // Directed pieces, then cancellation of opposite pairs.
-  std::map<std::pair<std::pair<double, double>, std::pair<double, double>>, int> count;
+  // Cut every edge e at each point x strictly inside it that is an endpoint of an edge f collinear
+  // with e (a collinear overlap, split at the other's endpoints).
+  std::vector<std::vector<Point>> cuts(op.size());
+  const EdgeGrid grid(op);
+  for (std::uint32_t k = 0; k < numbers.size(); ++k) {
+    const Point x = numbers.point(k);
+    for (auto [it, end] = grid.near(x); it != end; ++it) {
+      const std::uint32_t e = *it;
+      const Point a = op.from(e), b = op.to(e);
+      if (!strictlyInside(a, b, x) || orientation(a, b, x, counters_) != Sign::Zero) continue;
+      for (const std::uint32_t* f = edgesAt.begin(k); f != edgesAt.end(k); ++f) {
+        const Point other = fromNumber[*f] == k ? op.to(*f) : op.from(*f);
+        if (orientation(a, b, other, counters_) == Sign::Zero) {
+          cuts[e].push_back(x);
+          break;
+        }
+      }
+    }
+  }
+  // Directed pieces, then cancellation of opposite pairs: a piece cancels while both it and an
+  // opposite copy are still counted, in the order of the pieces.
   std::vector<std::pair<Point, Point>> pieces;
+  pieces.reserve(op.size());
   for (std::uint32_t e = 0; e < op.size(); ++e) {
-    std::vector<Point> pts = cuts[e];
+    std::vector<Point>& pts = cuts[e];
     const Point a = op.from(e), b = op.to(e);
     std::sort(pts.begin(), pts.end(), PointLess());
     pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
@@ -181,23 +299,33 @@ Region CleanUp::dissolveSeams(const Region& region) const {
     for (const Point& x : pts) pieces.push_back({from, x}), from = x;
     pieces.push_back({from, b});
   }
-  auto key = [](Point u, Point v) { return std::make_pair(std::make_pair(u.x, u.y), std::make_pair(v.x, v.y)); };
-  for (const auto& [u, v] : pieces) ++count[key(u, v)];
-  std::vector<std::pair<Point, Point>> kept;
-  for (const auto& [u, v] : pieces) {
+  PointNumbers ends(numbers.size());
+  std::vector<std::uint32_t> pieceFrom(pieces.size()), pieceTo(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    pieceFrom[i] = ends.number(pieces[i].first), pieceTo[i] = ends.number(pieces[i].second);
+  }
+  // Counts of directed pieces, keyed by (from, to) numbers.
+  std::unordered_map<std::uint64_t, int> count;
+  count.reserve(2 * pieces.size());
+  auto key = [](std::uint32_t u, std::uint32_t v) { return (std::uint64_t{u} << 32) | v; };
+  for (std::size_t i = 0; i < pieces.size(); ++i) ++count[key(pieceFrom[i], pieceTo[i])];
+  std::vector<std::uint32_t> kept;
+  for (std::uint32_t i = 0; i < pieces.size(); ++i) {
+    const std::uint32_t u = pieceFrom[i], v = pieceTo[i];
     int& forward = count[key(u, v)];
-    int& backward = count[key(v, u)];
-    if (forward > 0 && backward > 0 && !(u == v)) {
-      --forward, --backward;  // this piece and one opposite copy cancel
+    const auto backwardIt = count.find(key(v, u));
+    if (forward > 0 && backwardIt != count.end() && backwardIt->second > 0 && u != v) {
+      --forward, --backwardIt->second;  // this piece and one opposite copy cancel
       continue;
     }
-    if (forward > 0) --forward, kept.push_back({u, v});
+    if (forward > 0) --forward, kept.push_back(i);
   }
   // Chain the remaining pieces; at a vertex with several ways on, take the sharpest right turn,
   // decided exactly. Any choice bounds the same even-odd interior; this one is deterministic
   // (counter-clockwise rings touching at a vertex become one ring through it).
-  std::map<Point, std::vector<std::size_t>, PointLess> outgoing;
-  for (std::size_t i = 0; i < kept.size(); ++i) outgoing[kept[i].first].push_back(i);
+  const Rows outgoing(ends.size(), [&](auto&& add) {
+    for (std::uint32_t j = 0; j < kept.size(); ++j) add(pieceFrom[kept[j]], j);
+  });
   std::vector<char> used(kept.size(), 0);
   Region out;
   for (std::size_t start = 0; start < kept.size(); ++start) {
@@ -206,12 +334,13 @@ Region CleanUp::dissolveSeams(const Region& region) const {
     std::size_t cur = start;
     for (std::size_t guard = 0; guard <= kept.size(); ++guard) {
       used[cur] = 1;
-      ring.push_back(kept[cur].first);
-      const Point from = kept[cur].first, at = kept[cur].second;
+      const auto& [from, at] = pieces[kept[cur]];
+      ring.push_back(from);
+      const std::uint32_t atNumber = pieceTo[kept[cur]];
       std::size_t best = kept.size();
-      for (std::size_t j : outgoing[at]) {
-        if (used[j]) continue;
-        if (best == kept.size() || sharperRight(from, at, kept[j].second, kept[best].second)) best = j;
+      for (const std::uint32_t* j = outgoing.begin(atNumber); j != outgoing.end(atNumber); ++j) {
+        if (used[*j]) continue;
+        if (best == kept.size() || sharperRight(from, at, pieces[kept[*j]].second, pieces[kept[best]].second)) best = *j;
       }
       if (best == kept.size()) break;  // back at the start (its piece is used)
       cur = best;

@@ -5,14 +5,23 @@
 //   Search     which edge pairs to test (search/: all pairs, or a sweep):
 //              forEachCandidate(subject, clip, visit)
 //   Arithmetic how a pair is decided and how crossings are ordered along an edge (arithmetic/:
-//              the paper's doubles, or exact predicates under Simulation of Simplicity)
+//              the paper's doubles, or exact predicates under Simulation of Simplicity):
+//                PairTest test(subject, se, clip, ce, Crossing& out, Extra& extra)
+//                int compareAlongSubject(a, extraA, b, extraB, subject, clip), compareAlongClip
+//              where Extra is whatever the policy's ordering needs beside the Crossing (nothing for
+//              the paper's), kept only during phase 1.
 // A policy that can meet degenerate contacts (Arithmetic::kReportsDegeneracies, the paper's only)
 // reports them; phase 1 then lists the vertices concerned and stops before ordering. What to do
 // about them is not phase 1's business: paper_perturbation.h wraps it.
+//
+// Ordering costs O(k + n + m) plus short sorts: crossings are bucketed by edge (counting sort,
+// stable) and each edge's own few crossings are sorted along it. Ties (several crossings at one
+// point) are broken by the other edge's index, so every search yields the same lists.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "arithmetic/pair_test.h"
@@ -27,16 +36,76 @@ struct Degeneracies {
   bool empty() const { return subject.empty() && clip.empty(); }
 };
 
+// Indices 0..keys.size()-1 sorted by key (each below `buckets`), stable; offsets[b] is where
+// bucket b starts, offsets[buckets] the end.
+inline std::vector<std::uint32_t> countingSort(const std::vector<std::uint32_t>& keys, std::size_t buckets,
+                                               std::vector<std::uint32_t>& offsets) {
+  offsets.assign(buckets + 1, 0);
+  for (std::uint32_t k : keys) ++offsets[k + 1];
+  for (std::size_t b = 0; b < buckets; ++b) offsets[b + 1] += offsets[b];
+  std::vector<std::uint32_t> order(keys.size()), at(offsets.begin(), offsets.end() - 1);
+  for (std::uint32_t i = 0; i < keys.size(); ++i) order[at[keys[i]]++] = i;
+  return order;
+}
+
+// Sorts each bucket [offsets[b], offsets[b+1]) of `order` with `less`.
+template <class Less>
+void sortBuckets(std::vector<std::uint32_t>& order, const std::vector<std::uint32_t>& offsets, Less less) {
+  for (std::size_t b = 0; b + 1 < offsets.size(); ++b) {
+    const auto first = order.begin() + offsets[b], last = order.begin() + offsets[b + 1];
+    if (last - first > 1) std::sort(first, last, less);
+  }
+}
+
+// Orders the crossings along the subject (moving them into that order) and along the clip.
+template <class Arithmetic, class Extra>
+void orderAlongEdges(Phase1Result& r, std::vector<Extra>& extras, const Arithmetic& arithmetic) {
+  constexpr bool kHasExtra = !std::is_empty_v<Extra>;
+  static const Extra kNoExtra{};
+  auto extra = [&extras](std::uint32_t i) -> const Extra& {
+    if constexpr (kHasExtra) return extras[i];
+    return kNoExtra;
+  };
+  const auto& cs = r.crossings;
+  std::vector<std::uint32_t> keys(cs.size()), offsets;
+  for (std::size_t i = 0; i < cs.size(); ++i) keys[i] = cs[i].subjectEdge;
+  std::vector<std::uint32_t> order = countingSort(keys, r.subject.size(), offsets);
+  sortBuckets(order, offsets, [&](std::uint32_t a, std::uint32_t b) {
+    if (const int c = arithmetic.compareAlongSubject(cs[a], extra(a), cs[b], extra(b), r.subject, r.clip)) return c < 0;
+    return cs[a].clipEdge < cs[b].clipEdge;
+  });
+  std::vector<Crossing> sorted(cs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = cs[order[i]];
+  r.crossings.swap(sorted);
+  if constexpr (kHasExtra) {
+    std::vector<Extra> sortedExtras(extras.size());
+    for (std::size_t i = 0; i < order.size(); ++i) sortedExtras[i] = extras[order[i]];
+    extras.swap(sortedExtras);
+  }
+
+  for (std::size_t i = 0; i < cs.size(); ++i) keys[i] = cs[i].clipEdge;
+  r.clipOrder = countingSort(keys, r.clip.size(), offsets);
+  sortBuckets(r.clipOrder, offsets, [&](std::uint32_t a, std::uint32_t b) {
+    if (const int c = arithmetic.compareAlongClip(cs[a], extra(a), cs[b], extra(b), r.subject, r.clip)) return c < 0;
+    return cs[a].subjectEdge < cs[b].subjectEdge;
+  });
+}
+
 template <class Search, class Arithmetic>
 Phase1Result findIntersections(Operand subject, Operand clip, const Search& search, const Arithmetic& arithmetic,
                                Stats& stats, Degeneracies* degeneracies = nullptr) {
-  Phase1Result r{std::move(subject), std::move(clip), {}, {}, {}};
+  using Extra = typename Arithmetic::Extra;
+  Phase1Result r{std::move(subject), std::move(clip), {}, {}};
+  std::vector<Extra> extras;
   Degeneracies found;
   search.forEachCandidate(r.subject, r.clip, [&](std::uint32_t se, std::uint32_t ce) {
     ++stats.candidatePairs;
-    const PairTest t = arithmetic.test(r.subject, se, r.clip, ce);
+    Crossing crossing;
+    Extra extra;
+    const PairTest t = arithmetic.test(r.subject, se, r.clip, ce, crossing, extra);
     if (t.kind == PairTest::Kind::Crossing) {
-      r.crossings.push_back(t.crossing);
+      r.crossings.push_back(crossing);
+      if constexpr (!std::is_empty_v<Extra>) extras.push_back(extra);
     } else if constexpr (Arithmetic::kReportsDegeneracies) {
       if (t.kind == PairTest::Kind::Degenerate) {
         if (t.onOtherEdge & PairTest::kSubjectFrom) found.subject.push_back(se);
@@ -57,25 +126,7 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
     }
   }
   stats.intersections = r.crossings.size();
-
-  // Order along edges; ties (several crossings at one point) broken by the other edge's index
-  // so that every candidate search yields the same lists.
-  const auto& cs = r.crossings;
-  r.subjectOrder.resize(cs.size());
-  r.clipOrder.resize(cs.size());
-  for (std::uint32_t i = 0; i < cs.size(); ++i) r.subjectOrder[i] = r.clipOrder[i] = i;
-  std::sort(r.subjectOrder.begin(), r.subjectOrder.end(), [&](std::uint32_t a, std::uint32_t b) {
-    if (cs[a].subjectEdge != cs[b].subjectEdge) return cs[a].subjectEdge < cs[b].subjectEdge;
-    if (a == b) return false;
-    if (const int c = arithmetic.compareAlongSubject(cs[a], cs[b], r.subject, r.clip)) return c < 0;
-    return cs[a].clipEdge < cs[b].clipEdge;
-  });
-  std::sort(r.clipOrder.begin(), r.clipOrder.end(), [&](std::uint32_t a, std::uint32_t b) {
-    if (cs[a].clipEdge != cs[b].clipEdge) return cs[a].clipEdge < cs[b].clipEdge;
-    if (a == b) return false;
-    if (const int c = arithmetic.compareAlongClip(cs[a], cs[b], r.subject, r.clip)) return c < 0;
-    return cs[a].subjectEdge < cs[b].subjectEdge;
-  });
+  orderAlongEdges(r, extras, arithmetic);
   return r;
 }
 

@@ -14,24 +14,21 @@ namespace gh::detail {
 struct Crossing {
   std::uint32_t subjectEdge = 0;
   std::uint32_t clipEdge = 0;
-  // Position along each edge in [0, 1] (the paper's alpha values). The paper arithmetic orders
-  // crossings along an edge by these; the exact arithmetic by exact predicates.
-  double alphaSubject = 0;
-  double alphaClip = 0;
-  // Certified bounds |true alpha - alpha| <= err, used by the exact arithmetic to order crossings
-  // without its full predicate when the intervals are disjoint (infinite: no bound).
-  double errSubject = 0;
-  double errClip = 0;
   // The one constructed point shared by both copies of the intersection vertex.
   Point point;
+  // Position along each edge in [0, 1] (the paper's alpha values). The paper arithmetic orders
+  // crossings along an edge by these; the exact arithmetic starts from them.
+  double alphaSubject = 0;
+  double alphaClip = 0;
 };
 
 struct Phase1Result {
   Operand subject;  // the vertices actually used (perturbed copies for the paper arithmetic)
   Operand clip;
+  // In order along the subject: by edge, then along the edge. A crossing's index here is its
+  // subject intersection vertex.
   std::vector<Crossing> crossings;
-  // Crossing ids sorted by (edge, position along the edge) for each operand.
-  std::vector<std::uint32_t> subjectOrder;
+  // Crossing indices in order along the clip: by edge, then along the edge.
   std::vector<std::uint32_t> clipOrder;
 };
 

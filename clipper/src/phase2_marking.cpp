@@ -6,13 +6,9 @@ void markEntryExit(VertexGraph& g) {
   for (const auto* rings : {&g.subjectRings, &g.clipRings}) {
     for (const RingInfo& ring : *rings) {
       if (ring.head == kNone) continue;
-      bool status = !ring.startsInside;  // entry when starting outside
-      std::uint32_t n = ring.head;
-      do {
-        g.nodes[n].entry = status;
-        status = !status;
-        n = g.nodes[n].next;
-      } while (n != ring.head);
+      // Entry when starting outside, then alternately exit and entry along the ring.
+      std::uint8_t status = ring.startsInside ? 0 : 1;
+      for (std::uint32_t n = ring.head; n < ring.endNode; ++n, status ^= 1) g.entry[n] = status;
     }
   }
 }

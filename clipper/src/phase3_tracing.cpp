@@ -1,5 +1,7 @@
 #include "phase3_tracing.h"
 
+#include <algorithm>
+
 #include "ghclip/errors.h"
 
 namespace gh::detail {
@@ -23,33 +25,30 @@ Ring copyRing(const Operand& op, const RingInfo& ring) {
 void traceOneOp(VertexGraph& g, Op op, Region& out) {
   const bool flipSubject = !keepsSubjectPiecesInsideClip(op);
   const bool flipClip = !keepsClipPiecesInsideSubject(op);
-  auto forward = [&](std::uint32_t n) {
-    return g.nodes[n].entry != (g.isSubjectNode(n) ? flipSubject : flipClip);
-  };
-  for (Node& node : g.nodes) node.visited = false;
+  auto forward = [&](std::uint32_t n) { return (g.entry[n] != 0) != (g.isSubjectNode(n) ? flipSubject : flipClip); };
+  std::fill(g.visited.begin(), g.visited.end(), 0);
   // Every step moves to another intersection vertex; a closed trace visits each at most once.
-  const std::size_t bound = g.nodes.size() + 4;
+  const std::size_t bound = g.nodeCount() + 4;
 
   for (std::uint32_t first = 0; first < g.firstClipNode; ++first) {
-    if (g.nodes[first].visited) continue;
+    if (g.visited[first]) continue;
     Ring traced;
     std::uint32_t current = first;
     for (std::size_t steps = 0;; ++steps) {
       if (steps > bound) throw ClipFailure("tracing did not close within its bound");
-      Node& at = g.nodes[current];
-      at.visited = g.nodes[at.neighbor].visited = true;
-      traced.push_back(at.p);
+      g.visited[g.crossingOf(current)] = 1;
+      traced.push_back(g.point(current));
       // Along this operand to the next intersection vertex, then over to the other operand.
       if (forward(current)) {
         g.appendRunForward(current, traced);
-        current = g.nodes[current].next;
+        current = g.next(current);
       } else {
         g.appendRunBackward(current, traced);
-        current = g.nodes[current].prev;
+        current = g.prev(current);
       }
-      current = g.nodes[current].neighbor;
-      if (current == first || g.nodes[current].neighbor == first) break;
-      if (g.nodes[current].visited) {
+      current = g.neighbor(current);
+      if (current == first || g.neighbor(current) == first) break;
+      if (g.visited[g.crossingOf(current)]) {
         throw ClipFailure("tracing reached a used intersection vertex (inconsistent entry/exit marks)");
       }
     }

@@ -45,9 +45,9 @@ TEST(Phase2, LocatesRingStartsAndAlternatesEntryAndExit) {
     std::uint32_t n = ring->head;
     int count = 0;
     do {
-      EXPECT_EQ(g.nodes[n].entry, expected);
+      EXPECT_EQ(g.entry[n] != 0, expected);
       expected = !expected;
-      n = g.nodes[n].next;
+      n = g.next(n);
       ++count;
     } while (n != ring->head);
     EXPECT_EQ(count, 4);

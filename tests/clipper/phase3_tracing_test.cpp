@@ -54,7 +54,7 @@ TEST(Tracing, BrokenListsRaiseClipFailureInsteadOfLooping) {
   VertexGraph& g = gate.graph;
   EXPECT_NO_THROW(traceResult(g, Op::Intersection));
   // Point every clip node's neighbour at one subject node: traces can no longer close.
-  for (std::uint32_t n = g.firstClipNode; n < g.nodes.size(); ++n) g.nodes[n].neighbor = 1;
+  for (std::uint32_t& s : g.clipToSubject) s = 1;
   EXPECT_THROW(traceResult(g, Op::Intersection), ClipFailure);
 }
 
@@ -64,9 +64,9 @@ TEST(Tracing, ReusedIntersectionVertexRaisesClipFailure) {
   Gate gate;
   const VertexGraph& g = gate.graph;
   int failures = 0;
-  for (std::uint32_t n = 0; n < g.nodes.size(); ++n) {
+  for (std::uint32_t n = 0; n < g.nodeCount(); ++n) {
     VertexGraph corrupt = g;
-    corrupt.nodes[n].entry = !corrupt.nodes[n].entry;
+    corrupt.entry[n] ^= 1;
     try {
       traceResult(corrupt, Op::Intersection);
     } catch (const ClipFailure& e) {

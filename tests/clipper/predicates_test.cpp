@@ -140,7 +140,9 @@ TEST(SoS, IdenticalEdgesDoNotCrossButShiftedOnesDo) {
   const ExactArithmetic exact(counters);
   auto crosses = [&](Point p1, Point p2, Point q1, Point q2) {
     const Operand s({{p1, p2, {p1.x - 7, p1.y - 5}}}), c({{q1, q2, {q1.x + 11, q1.y - 13}}});
-    return exact.test(s, 0, c, 0).kind == PairTest::Kind::Crossing;
+    Crossing crossing;
+    ExactArithmetic::Extra extra;
+    return exact.test(s, 0, c, 0, crossing, extra).kind == PairTest::Kind::Crossing;
   };
   EXPECT_FALSE(crosses({0, 0}, {2, 0}, {0, 0}, {2, 0}));
   EXPECT_FALSE(crosses({0, 0}, {2, 0}, {1, 0}, {3, 0}));

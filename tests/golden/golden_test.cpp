@@ -47,8 +47,7 @@ std::string crossingsLine(Variant v, const work::Workload& w) {
     Stats stats;
     const Phase1Result r = phase1(v, w.subject, w.clip, stats);
     Fingerprint f;
-    for (std::uint32_t id : r.subjectOrder) {
-      const Crossing& x = r.crossings[id];
+    for (const Crossing& x : r.crossings) {
       f.add(std::uint64_t{x.subjectEdge}), f.add(std::uint64_t{x.clipEdge}), f.add(x.point);
     }
     for (std::uint32_t id : r.clipOrder) {

@@ -33,7 +33,7 @@ double certifiedRatio(FilteredDeterminant w1, FilteredDeterminant w2, double& er
 }  // namespace
 
 PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge, const Operand& clip,
-                               std::uint32_t clipEdge) const {
+                               std::uint32_t clipEdge, Crossing& x, Extra& extra) const {
   const Point p1 = subject.from(subjectEdge), p2 = subject.to(subjectEdge);
   const Point q1 = clip.from(clipEdge), q2 = clip.to(clipEdge);
   // Boxes of p and of q translated by (eps, eps^2): a tie on q's low side or p's high side
@@ -51,18 +51,17 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
   const Sign oQ1 = orientation(dQ1, p1, p2, q1, *counters_), oQ2 = orientation(dQ2, p1, p2, q2, *counters_);
   if (sos::subjectEdgeSide(oQ1, p1, p2) == sos::subjectEdgeSide(oQ2, p1, p2)) return {};
 
-  PairTest t;
-  t.kind = PairTest::Kind::Crossing;
-  Crossing& x = t.crossing;
   x.subjectEdge = subjectEdge;
   x.clipEdge = clipEdge;
   // Positions along both edges (the limit values) with certified error bounds: the sort orders
   // most crossings by them and asks the exact predicate only when two intervals overlap. Where
   // the limit is an input vertex, the position is exact.
-  x.alphaSubject = oP1 == Sign::Zero ? 0 : oP2 == Sign::Zero ? 1 : certifiedRatio(dP1, dP2, x.errSubject);
-  x.alphaClip = oQ1 == Sign::Zero ? 0 : oQ2 == Sign::Zero ? 1 : certifiedRatio(dQ1, dQ2, x.errClip);
+  extra.errSubject = extra.errClip = 0;
+  x.alphaSubject = oP1 == Sign::Zero ? 0 : oP2 == Sign::Zero ? 1 : certifiedRatio(dP1, dP2, extra.errSubject);
+  x.alphaClip = oQ1 == Sign::Zero ? 0 : oQ2 == Sign::Zero ? 1 : certifiedRatio(dQ1, dQ2, extra.errClip);
   // The point in the limit eps -> 0, once, from the original coordinates: that input vertex where
   // the limit is one, else the crossing faithfully rounded (construction.h).
+  extra.atInputVertex = true;
   if (oP1 == Sign::Zero) {
     x.point = p1;
   } else if (oP2 == Sign::Zero) {
@@ -72,20 +71,21 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
   } else if (oQ2 == Sign::Zero) {
     x.point = q2;
   } else {
+    extra.atInputVertex = false;
     x.point = constructCrossing(p1, p2, q1, q2, *counters_);
   }
-  return t;
+  return {PairTest::Kind::Crossing, 0};
 }
 
-int ExactArithmetic::exactlyAlongSubject(const Crossing& a, const Crossing& b, const Operand& subject,
-                                         const Operand& clip) const {
+int ExactArithmetic::exactlyAlongSubject(const Crossing& a, const Extra&, const Crossing& b, const Extra&,
+                                         const Operand& subject, const Operand& clip) const {
   const std::uint32_t e = a.subjectEdge;
   return sos::compareAlongSubject(subject.from(e), subject.to(e), clip.from(a.clipEdge), clip.to(a.clipEdge),
                                   clip.from(b.clipEdge), clip.to(b.clipEdge), *counters_);
 }
 
-int ExactArithmetic::exactlyAlongClip(const Crossing& a, const Crossing& b, const Operand& subject,
-                                      const Operand& clip) const {
+int ExactArithmetic::exactlyAlongClip(const Crossing& a, const Extra&, const Crossing& b, const Extra&,
+                                      const Operand& subject, const Operand& clip) const {
   const std::uint32_t e = a.clipEdge;
   return sos::compareAlongClip(clip.from(e), clip.to(e), subject.from(a.subjectEdge), subject.to(a.subjectEdge),
                                subject.from(b.subjectEdge), subject.to(b.subjectEdge), *counters_);

@@ -1,16 +1,15 @@
-// The verdict of an arithmetic policy on one (subject edge, clip edge) pair.
+// The verdict of an arithmetic policy on one (subject edge, clip edge) pair: two bytes. The
+// crossing itself, when there is one, is written by the policy into the caller's record.
 #pragma once
 
 #include <cstdint>
-
-#include "phase1_result.h"
 
 namespace gh::detail {
 
 struct PairTest {
   enum class Kind : std::uint8_t {
     None,        // the edges do not meet
-    Crossing,    // a proper crossing, in `crossing`
+    Crossing,    // a proper crossing, written to the caller's Crossing
     Degenerate,  // they touch or overlap (paper arithmetic only): the vertices in `onOtherEdge`
                  // lie on the other operand's edge
   };
@@ -19,7 +18,6 @@ struct PairTest {
 
   Kind kind = Kind::None;
   std::uint8_t onOtherEdge = 0;
-  Crossing crossing;
 };
 
 }  // namespace gh::detail

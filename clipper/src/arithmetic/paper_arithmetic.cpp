@@ -51,8 +51,8 @@ bool insideOperand(Point p, const Operand& other, ExactCounters& counters) {
 
 }  // namespace
 
-PairTest PaperArithmetic::test(const Operand& subject, std::uint32_t subjectEdge,
-                               const Operand& clip, std::uint32_t clipEdge) const {
+PairTest PaperArithmetic::test(const Operand& subject, std::uint32_t subjectEdge, const Operand& clip,
+                               std::uint32_t clipEdge, Crossing& out, Extra&) const {
   const Point p1 = subject.from(subjectEdge), p2 = subject.to(subjectEdge);
   const Point q1 = clip.from(clipEdge), q2 = clip.to(clipEdge);
   // The paper's early out (outcodes): disjoint bounding boxes cannot meet.
@@ -78,15 +78,13 @@ PairTest PaperArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
     if (sQ2 == 0) flags |= PairTest::kClipTo;
     return degenerate(flags);
   }
-  PairTest t;
-  t.kind = PairTest::Kind::Crossing;
-  t.crossing.subjectEdge = subjectEdge;
-  t.crossing.clipEdge = clipEdge;
-  t.crossing.alphaSubject = wecP1 / (wecP1 - wecP2);
-  t.crossing.alphaClip = wecQ1 / (wecQ1 - wecQ2);
-  const double a = t.crossing.alphaSubject;
-  t.crossing.point = {p1.x + a * (p2.x - p1.x), p1.y + a * (p2.y - p1.y)};
-  return t;
+  out.subjectEdge = subjectEdge;
+  out.clipEdge = clipEdge;
+  out.alphaSubject = wecP1 / (wecP1 - wecP2);
+  out.alphaClip = wecQ1 / (wecQ1 - wecQ2);
+  const double a = out.alphaSubject;
+  out.point = {p1.x + a * (p2.x - p1.x), p1.y + a * (p2.y - p1.y)};
+  return {PairTest::Kind::Crossing, 0};
 }
 
 bool PaperArithmetic::subjectVertexInsideClip(const Operand& subject, std::uint32_t v, const Operand& clip) const {

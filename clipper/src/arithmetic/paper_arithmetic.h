@@ -16,6 +16,7 @@
 
 #include "arithmetic/pair_test.h"
 #include "operand.h"
+#include "phase1_result.h"
 #include "predicates/exact_counters.h"
 #include "predicates/sign.h"
 
@@ -27,17 +28,23 @@ class PaperArithmetic {
   // Perturbed answers have no zero-width parts to dissolve (cleanup.h).
   static constexpr bool kLeavesZeroWidthParts = false;
 
+  // The ordering needs nothing beside the alpha values.
+  struct Extra {};
+
   explicit PaperArithmetic(ExactCounters& counters) : counters_(&counters) {}
 
-  PairTest test(const Operand& subject, std::uint32_t subjectEdge, const Operand& clip,
-                std::uint32_t clipEdge) const;
+  // The paper's intersect(): a crossing is written to `out`.
+  PairTest test(const Operand& subject, std::uint32_t subjectEdge, const Operand& clip, std::uint32_t clipEdge,
+                Crossing& out, Extra&) const;
 
   // Order of two crossings on the same subject (clip) edge: by alpha, as in the paper.
   // -1: a first, +1: b first, 0: tied.
-  int compareAlongSubject(const Crossing& a, const Crossing& b, const Operand&, const Operand&) const {
+  int compareAlongSubject(const Crossing& a, const Extra&, const Crossing& b, const Extra&, const Operand&,
+                          const Operand&) const {
     return signOfDifference(a.alphaSubject, b.alphaSubject);
   }
-  int compareAlongClip(const Crossing& a, const Crossing& b, const Operand&, const Operand&) const {
+  int compareAlongClip(const Crossing& a, const Extra&, const Crossing& b, const Extra&, const Operand&,
+                       const Operand&) const {
     return signOfDifference(a.alphaClip, b.alphaClip);
   }
 

@@ -14,6 +14,11 @@ Sign crossSign(Point a, Point b, Point c, Point d, ExactCounters& counters) {
       counters);
 }
 
-Sign orientationExact(Point a, Point b, Point c, ExactCounters& counters) { return crossSign(a, b, a, c, counters); }
+Sign orientationExact(Point a, Point b, Point c, ExactCounters& counters) {
+  // Two equal points make the determinant exactly zero, but its factors are differences that the
+  // filter carries with a rounding error, so it could not certify that: say it here.
+  if (a == b || a == c || b == c) return Sign::Zero;
+  return crossSign(a, b, a, c, counters);
+}
 
 }  // namespace gh::detail
