@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   if (full) t1.push_back(5000);
   for (Op op : kAllOps) {
     for (const char* m : {"clipper6", "naive", "sweep", "exact"}) add("t1", "random", m, op, t1);
+    // The floor: the same on every operation (it does not trace), timed once.
+    if (op == Op::Intersection) add("t1", "random", "crossings", op, t1);
   }
   const std::map<std::string, std::vector<long>> t2{{"simple", {100, 1000}},
                                                      {"holes", {100, 1000}},

@@ -49,39 +49,47 @@ class CleanUp {
 
   // Drops repeated points and spike tips, including ones that only appear once others are gone
   // (A B C B A: C, then B). Spikes and repeated points bound nothing: the interior is unchanged.
-  void simplify(Ring& ring) const {
-    Ring out;
-    out.reserve(ring.size());
-    auto push = [&](Point p) {
-      if (!out.empty() && out.back() == p) return;
-      while (out.size() >= 2 && isSpike(out[out.size() - 2], out.back(), p)) {
-        out.pop_back();
-        if (out.back() == p) return;
+  // In place: the ring [first, last) becomes [first, returned end).
+  Point* simplify(Point* first, Point* last) const {
+    Point* out = first;  // the kept points are [first, out); never ahead of the point read
+    for (const Point* i = first; i < last; ++i) {
+      const Point p = *i;
+      if (out > first && out[-1] == p) continue;
+      bool repeated = false;
+      while (out - first >= 2 && isSpike(out[-2], out[-1], p)) {
+        --out;
+        if (out[-1] == p) {
+          repeated = true;
+          break;
+        }
       }
-      out.push_back(p);
-    };
-    for (const Point& p : ring) push(p);
+      if (!repeated) *out++ = p;
+    }
     // Close the ring: the seam between the last and the first points may hide repeats and spikes.
-    for (bool changed = true; changed && out.size() >= 3;) {
+    for (bool changed = true; changed && out - first >= 3;) {
       changed = false;
-      if (out.back() == out.front()) {
-        out.pop_back(), changed = true;
-      } else if (isSpike(out[out.size() - 2], out.back(), out.front())) {
-        out.pop_back(), changed = true;
-      } else if (isSpike(out.back(), out[0], out[1])) {
-        out.erase(out.begin()), changed = true;
+      if (out[-1] == first[0]) {
+        --out, changed = true;
+      } else if (isSpike(out[-2], out[-1], first[0])) {
+        --out, changed = true;
+      } else if (isSpike(out[-1], first[0], first[1])) {
+        std::copy(first + 1, out, first);
+        --out, changed = true;
       }
     }
-    ring.swap(out);
+    return out;
   }
+  void simplify(Ring& ring) const { ring.resize(static_cast<std::size_t>(simplify(ring.data(), ring.data() + ring.size()) - ring.data())); }
 
-  bool allCollinear(const Ring& ring) const {
-    // ring[0] != ring[1] after simplify, so they span a line.
-    for (std::size_t i = 2; i < ring.size(); ++i) {
-      if (orientation(ring[0], ring[1], ring[i], counters_) != Sign::Zero) return false;
+  bool allCollinear(const Point* first, const Point* last) const {
+    // first[0] != first[1] after simplify, so they span a line.
+    for (const Point* i = first + 2; i < last; ++i) {
+      if (orientation(first[0], first[1], *i, counters_) != Sign::Zero) return false;
     }
     return true;
   }
+
+  bool allCollinear(const Ring& ring) const { return allCollinear(ring.data(), ring.data() + ring.size()); }
 
   // Drops vertices where the ring goes straight on (collinear, not folding back).
   void dropStraightVertices(Ring& ring) const {
@@ -121,13 +129,11 @@ class CleanUp {
   ExactCounters& counters_;
 };
 
-// Does any point occur twice in the region? A flat open-addressing table: this runs over every
-// output vertex of the exact arithmetic.
-bool anyVertexRepeats(const Region& region) {
-  std::size_t n = 0;
-  for (const Ring& ring : region) n += ring.size();
+// Does any point occur twice? A flat open-addressing table: this runs over every output vertex of
+// the exact arithmetic.
+bool anyVertexRepeats(const std::vector<Point>& points) {
   std::size_t capacity = 16;
-  while (capacity < 2 * n) capacity *= 2;
+  while (capacity < 2 * points.size()) capacity *= 2;
   // Reused between calls: this runs on every answer of the exact arithmetic, and on small answers
   // the allocation would cost more than the pass.
   thread_local std::vector<Point> slots;
@@ -135,15 +141,13 @@ bool anyVertexRepeats(const Region& region) {
   if (slots.size() < capacity) slots.resize(capacity);
   used.assign(capacity, 0);
   const PointHash hash;
-  for (const Ring& ring : region) {
-    for (const Point& p : ring) {
-      for (std::size_t i = hash(p) & (capacity - 1);; i = (i + 1) & (capacity - 1)) {
-        if (!used[i]) {
-          used[i] = 1, slots[i] = p;
-          break;
-        }
-        if (slots[i] == p) return true;
+  for (const Point& p : points) {
+    for (std::size_t i = hash(p) & (capacity - 1);; i = (i + 1) & (capacity - 1)) {
+      if (!used[i]) {
+        used[i] = 1, slots[i] = p;
+        break;
       }
+      if (slots[i] == p) return true;
     }
   }
   return false;
@@ -352,25 +356,38 @@ Region CleanUp::dissolveSeams(const Region& region) const {
 
 }  // namespace
 
-Region cleanedUp(Region region, bool dissolve, ExactCounters& counters) {
+Region cleanedUp(FlatRings rings, bool dissolve, ExactCounters& counters) {
   const CleanUp cleanUp(counters);
-  Region out;
-  out.reserve(region.size());
-  for (Ring& ring : region) {
-    cleanUp.simplify(ring);
-    if (ring.size() >= 3 && !cleanUp.allCollinear(ring)) out.push_back(std::move(ring));
+  // Every ring simplified where it is, then moved down over what earlier rings gave up.
+  std::vector<Point>& points = rings.points;
+  std::uint32_t write = 0;
+  std::vector<std::uint32_t> start{0};
+  start.reserve(rings.start.size());
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    Point* first = points.data() + rings.start[r];
+    Point* last = cleanUp.simplify(first, points.data() + rings.start[r + 1]);
+    if (last - first < 3 || cleanUp.allCollinear(first, last)) continue;
+    std::copy(first, last, points.data() + write);
+    write += static_cast<std::uint32_t>(last - first);
+    start.push_back(write);
   }
+  points.resize(write);
+  rings.start.swap(start);
   // Seams are looked for only where a vertex repeats (rings touching at a shared vertex: the usual
   // shape of the exact arithmetic's seams), which costs one hash pass otherwise. Rings that touch
   // only along a T-junction keep their seam; their even-odd interior is right either way.
-  if (!dissolve || !anyVertexRepeats(out)) return out;
+  if (!dissolve || !anyVertexRepeats(points)) return rings.toRegion();
   Region dissolved;
-  for (Ring& ring : cleanUp.dissolveSeams(out)) {
+  for (Ring& ring : cleanUp.dissolveSeams(rings.toRegion())) {
     cleanUp.simplify(ring);
     cleanUp.dropStraightVertices(ring);
     if (ring.size() >= 3 && !cleanUp.allCollinear(ring)) dissolved.push_back(std::move(ring));
   }
   return dissolved;
+}
+
+Region cleanedUp(const Region& region, bool dissolve, ExactCounters& counters) {
+  return cleanedUp(FlatRings::from(region), dissolve, counters);
 }
 
 }  // namespace gh::detail

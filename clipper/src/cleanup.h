@@ -4,6 +4,7 @@
 // perturbation leaves slivers of zero width).
 #pragma once
 
+#include "flat_rings.h"
 #include "ghclip/region.h"
 #include "predicates/exact_counters.h"
 
@@ -14,6 +15,7 @@ namespace gh::detail {
 // rational arithmetic counted in `counters`. With dissolveSeams (for an arithmetic whose answers
 // are a limit that leaves zero-width parts: Arithmetic::kLeavesZeroWidthParts), zero-width seams
 // between rings that share a vertex are dissolved too.
-Region cleanedUp(Region region, bool dissolveSeams, ExactCounters& counters);
+Region cleanedUp(FlatRings rings, bool dissolveSeams, ExactCounters& counters);
+Region cleanedUp(const Region& region, bool dissolveSeams, ExactCounters& counters);
 
 }  // namespace gh::detail

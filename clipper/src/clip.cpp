@@ -28,12 +28,14 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 
 // Phase 1 as each arithmetic needs it: the exact one plain, the paper's inside its perturbation loop.
 template <class CandidateSearch>
-Phase1Result phase1(Operand s, Operand c, const CandidateSearch& search, const ExactArithmetic& a, Stats& stats) {
-  return findIntersections(std::move(s), std::move(c), search, a, stats);
+Phase1Result phase1(Operand s, Operand c, const CandidateSearch& search, const ExactArithmetic& a, Stats& stats,
+                    unsigned threads) {
+  return findIntersections(std::move(s), std::move(c), search, a, stats, nullptr, threads);
 }
 template <class CandidateSearch>
-Phase1Result phase1(Operand s, Operand c, const CandidateSearch& search, const PaperArithmetic& a, Stats& stats) {
-  return findIntersectionsPerturbed(std::move(s), std::move(c), search, a, stats);
+Phase1Result phase1(Operand s, Operand c, const CandidateSearch& search, const PaperArithmetic& a, Stats& stats,
+                    unsigned threads) {
+  return findIntersectionsPerturbed(std::move(s), std::move(c), search, a, stats, threads);
 }
 
 // Search::Auto resolved: the paper arithmetic tests all pairs, as in the paper; the exact one
@@ -46,11 +48,12 @@ Region clipWith(Operand s, Operand c, Op op, const Options& options, Stats& stat
   ExactCounters counters;
   const Arithmetic arithmetic(counters);
 
+  const unsigned threads = options.threads == 0 ? availableThreads() : options.threads;
   auto t = Clock::now();
   const bool sweep = options.search == Search::Auto ? autoSweeps(arithmetic, s, c) : options.search == Search::Sweep;
   const Phase1Result crossings =
-      sweep ? phase1(std::move(s), std::move(c), SweepSearch{}, arithmetic, stats)
-          : phase1(std::move(s), std::move(c), AllPairsSearch{}, arithmetic, stats);
+      sweep ? phase1(std::move(s), std::move(c), SweepSearch{}, arithmetic, stats, threads)
+            : phase1(std::move(s), std::move(c), AllPairsSearch{}, arithmetic, stats, threads);
   stats.phase1Seconds = secondsSince(t);
 
   t = Clock::now();
@@ -60,7 +63,9 @@ Region clipWith(Operand s, Operand c, Op op, const Options& options, Stats& stat
   stats.phase2Seconds = secondsSince(t);
 
   t = Clock::now();
-  Region result = cleanedUp(traceResult(graph, op), Arithmetic::kLeavesZeroWidthParts, counters);
+  FlatRings traced;
+  traceResult(graph, op, traced);
+  Region result = cleanedUp(std::move(traced), Arithmetic::kLeavesZeroWidthParts, counters);
   stats.phase3Seconds = secondsSince(t);
 
   stats.filterFailures = counters.filterFailures;

@@ -1,6 +1,11 @@
 #include "ghclip/options.h"
 
+#include <algorithm>
+#include <thread>
+
 namespace gh {
+
+unsigned availableThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 Options optionsOf(Variant variant) {
   Options o;

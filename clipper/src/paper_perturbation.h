@@ -29,10 +29,11 @@ std::size_t perturb(Operand& subject, Operand& clip, const Degeneracies& degener
 
 template <class Search>
 Phase1Result findIntersectionsPerturbed(Operand subject, Operand clip, const Search& search,
-                                        const PaperArithmetic& arithmetic, Stats& stats) {
+                                        const PaperArithmetic& arithmetic, Stats& stats, unsigned threads = 1) {
   for (int round = 0;; ++round) {
     Degeneracies degeneracies;
-    Phase1Result r = findIntersections(std::move(subject), std::move(clip), search, arithmetic, stats, &degeneracies);
+    Phase1Result r =
+        findIntersections(std::move(subject), std::move(clip), search, arithmetic, stats, &degeneracies, threads);
     if (degeneracies.empty()) return r;
     if (round + 1 >= kMaxPerturbationRounds) {
       throw ClipFailure("degeneracies remain after " + std::to_string(kMaxPerturbationRounds) +

@@ -2,30 +2,38 @@
 // clip edge and order the crossings along both operands' edges.
 //
 // Written once over two plug-ins:
-//   Search     which edge pairs to test (search/: all pairs, or a sweep):
-//              forEachCandidate(subject, clip, visit)
+//   Search     which edge pairs to test (search/: all pairs, or a sweep), as a plan of units that
+//              can be visited in pieces: plan(subject, clip).visit(begin, end, onRow, onPair)
 //   Arithmetic how a pair is decided and how crossings are ordered along an edge (arithmetic/:
 //              the paper's doubles, or exact predicates under Simulation of Simplicity):
 //                PairTest test(subject, se, clip, ce, Crossing& out, Extra& extra)
-//                int compareAlongSubject(a, extraA, b, extraB, subject, clip), compareAlongClip
+//                void testRow(subject, se, clip, CrossingBuffer<Extra>&)   (all clip edges)
+//                int compareAlongSubject(SortItem a, SortItem b, crossings, extras, subject, clip),
+//                    compareAlongClip, double errorAlongSubject(Extra), errorAlongClip
 //              where Extra is whatever the policy's ordering needs beside the Crossing (nothing for
 //              the paper's), kept only during phase 1.
 // A policy that can meet degenerate contacts (Arithmetic::kReportsDegeneracies, the paper's only)
 // reports them; phase 1 then lists the vertices concerned and stops before ordering. What to do
 // about them is not phase 1's business: paper_perturbation.h wraps it.
 //
-// Ordering costs O(k + n + m) plus short sorts: crossings are bucketed by edge (counting sort,
-// stable) and each edge's own few crossings are sorted along it. Ties (several crossings at one
-// point) are broken by the other edge's index, so every search yields the same lists.
+// The search runs in pieces on `threads` threads (parallel.h), each piece into its own buffer;
+// the buffers are read in piece order, and the order along the edges is a total order, so the
+// result does not depend on the number of threads. Ordering costs O(k + n + m) plus short sorts:
+// crossings are bucketed by edge (counting sort, stable) and each edge's own crossings are sorted
+// along it. Ties (several crossings at one point) are broken by the other edge's index, so every
+// search yields the same lists.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
+#include <cmath>
 #include <type_traits>
 #include <vector>
 
 #include "arithmetic/pair_test.h"
 #include "ghclip/stats.h"
+#include "parallel.h"
+#include "phase1_buffers.h"
 #include "phase1_result.h"
 
 namespace gh::detail {
@@ -36,85 +44,211 @@ struct Degeneracies {
   bool empty() const { return subject.empty() && clip.empty(); }
 };
 
-// Indices 0..keys.size()-1 sorted by key (each below `buckets`), stable; offsets[b] is where
-// bucket b starts, offsets[buckets] the end.
-inline std::vector<std::uint32_t> countingSort(const std::vector<std::uint32_t>& keys, std::size_t buckets,
-                                               std::vector<std::uint32_t>& offsets) {
-  offsets.assign(buckets + 1, 0);
-  for (std::uint32_t k : keys) ++offsets[k + 1];
-  for (std::size_t b = 0; b < buckets; ++b) offsets[b + 1] += offsets[b];
-  std::vector<std::uint32_t> order(keys.size()), at(offsets.begin(), offsets.end() - 1);
-  for (std::uint32_t i = 0; i < keys.size(); ++i) order[at[keys[i]]++] = i;
-  return order;
-}
+// One crossing as the sort along an edge sees it: its position there (with a certified error
+// bound, 0 when the arithmetic has none), the other edge (the tie-breaker) and its index.
+struct SortItem {
+  double alpha, err;
+  std::uint32_t other, index;
+};
 
-// Sorts each bucket [offsets[b], offsets[b+1]) of `order` with `less`.
-template <class Less>
-void sortBuckets(std::vector<std::uint32_t>& order, const std::vector<std::uint32_t>& offsets, Less less) {
-  for (std::size_t b = 0; b + 1 < offsets.size(); ++b) {
-    const auto first = order.begin() + offsets[b], last = order.begin() + offsets[b + 1];
-    if (last - first > 1) std::sort(first, last, less);
+// Sorts the crossings of one edge, [first, last), along it, in the order of a total order:
+// alpha first (ties: the other edge), which is the whole order for an arithmetic whose order is
+// alpha's (the paper's); otherwise alpha only approximates it, and the arithmetic's compare(a, b)
+// (-1, 0: a tie, +1; consistent with every certified interval alpha +- err) decides within each
+// group of crossings whose intervals overlap. Expected O(s) for s crossings: the alphas are spread
+// over s slots by value and each slot's few are sorted by insertion.
+template <bool kAlphaOrderIsExact, class Compare>
+void sortAlongEdge(SortItem* first, SortItem* last, std::vector<SortItem>& scratch, std::vector<std::uint32_t>& slots,
+                   Compare&& compare) {
+  const std::size_t s = static_cast<std::size_t>(last - first);
+  if (s < 2) return;
+  if constexpr (!kAlphaOrderIsExact) {
+    // An alpha the arithmetic could not approximate (NaN or infinite: its determinants under- or
+    // overflowed) only starts the sort somewhere: its unbounded interval sends it to the exact
+    // comparison, as it does in the arithmetic's own compare.
+    for (SortItem* i = first; i < last; ++i) {
+      if (!std::isfinite(i->alpha)) i->alpha = 0.5, i->err = INFINITY;
+    }
   }
-}
-
-// Orders the crossings along the subject (moving them into that order) and along the clip.
-template <class Arithmetic, class Extra>
-void orderAlongEdges(Phase1Result& r, std::vector<Extra>& extras, const Arithmetic& arithmetic) {
-  constexpr bool kHasExtra = !std::is_empty_v<Extra>;
-  static const Extra kNoExtra{};
-  auto extra = [&extras](std::uint32_t i) -> const Extra& {
-    if constexpr (kHasExtra) return extras[i];
-    return kNoExtra;
+  auto byAlpha = [](const SortItem& a, const SortItem& b) {
+    return a.alpha < b.alpha || (!(b.alpha < a.alpha) && a.other < b.other);
   };
-  const auto& cs = r.crossings;
-  std::vector<std::uint32_t> keys(cs.size()), offsets;
-  for (std::size_t i = 0; i < cs.size(); ++i) keys[i] = cs[i].subjectEdge;
-  std::vector<std::uint32_t> order = countingSort(keys, r.subject.size(), offsets);
-  sortBuckets(order, offsets, [&](std::uint32_t a, std::uint32_t b) {
-    if (const int c = arithmetic.compareAlongSubject(cs[a], extra(a), cs[b], extra(b), r.subject, r.clip)) return c < 0;
-    return cs[a].clipEdge < cs[b].clipEdge;
+  auto insertionSort = [&byAlpha](SortItem* b, SortItem* e) {
+    for (SortItem* i = b + 1; i < e; ++i) {
+      const SortItem x = *i;
+      SortItem* j = i;
+      for (; j > b && byAlpha(x, *(j - 1)); --j) *j = *(j - 1);
+      *j = x;
+    }
+  };
+  if (s <= 16) {
+    insertionSort(first, last);
+  } else {
+    // Spread: slot floor(alpha * s), monotone in alpha, so sorting within slots sorts all.
+    slots.assign(s + 1, 0);
+    auto slotOf = [s](double alpha) {
+      const double t = alpha * static_cast<double>(s);
+      if (!(t > 0)) return std::size_t{0};
+      return t >= static_cast<double>(s) ? s - 1 : static_cast<std::size_t>(t);
+    };
+    for (SortItem* i = first; i < last; ++i) ++slots[slotOf(i->alpha) + 1];
+    for (std::size_t k = 0; k < s; ++k) slots[k + 1] += slots[k];
+    scratch.resize(s);
+    for (SortItem* i = first; i < last; ++i) scratch[slots[slotOf(i->alpha)]++] = *i;
+    std::copy(scratch.begin(), scratch.end(), first);
+    for (std::size_t k = 0, begin = 0; k < s; begin = slots[k], ++k) {
+      // After the placement, slots[k] is where slot k ends.
+      const std::size_t end = slots[k];
+      if (end - begin > 32) {
+        std::sort(first + begin, first + end, byAlpha);
+      } else {
+        insertionSort(first + begin, first + end);
+      }
+    }
+  }
+  if constexpr (!kAlphaOrderIsExact) {
+    // Groups: cut before i where every later interval lies strictly above every earlier one.
+    scratch.resize(s);  // reused for the suffix minima of the lower bounds
+    double lowest = INFINITY;
+    for (std::size_t i = s; i-- > 0;) {
+      lowest = std::min(lowest, first[i].alpha - first[i].err);  // -inf for an infinite err
+      scratch[i].alpha = lowest;
+    }
+    auto less = [&compare](const SortItem& x, const SortItem& y) {
+      if (const int c = compare(x, y)) return c < 0;
+      return x.other < y.other;
+    };
+    std::size_t begin = 0;
+    double highest = first[0].alpha + first[0].err;
+    for (std::size_t i = 1; i <= s; ++i) {
+      if (i == s || scratch[i].alpha > highest) {
+        if (i - begin > 1) std::sort(first + begin, first + i, less);
+        begin = i;
+        if (i < s) highest = first[i].alpha + first[i].err;
+      } else {
+        highest = std::max(highest, first[i].alpha + first[i].err);
+      }
+    }
+  }
+}
+
+// Sorts every bucket of `items` (given by offsets) along its edge, in pieces over `threads`.
+// compare(a, b, piece) is the arithmetic's order.
+template <bool kAlphaOrderIsExact, class Compare>
+void sortBuckets(std::vector<SortItem>& items, const std::vector<std::uint32_t>& offsets, unsigned threads,
+                 Compare&& compare) {
+  const std::size_t buckets = offsets.size() - 1;
+  const Pieces pieces = piecesFor(buckets, threads, 256);
+  runPieces(pieces, threads, [&](std::size_t p) {
+    std::vector<SortItem> scratch;
+    std::vector<std::uint32_t> slots;
+    for (std::size_t b = pieces.begin(p); b < pieces.end(p); ++b) {
+      sortAlongEdge<kAlphaOrderIsExact>(items.data() + offsets[b], items.data() + offsets[b + 1], scratch, slots,
+                                        [&](const SortItem& x, const SortItem& y) { return compare(x, y, p); });
+    }
   });
-  std::vector<Crossing> sorted(cs.size());
-  for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = cs[order[i]];
-  r.crossings.swap(sorted);
-  if constexpr (kHasExtra) {
-    std::vector<Extra> sortedExtras(extras.size());
-    for (std::size_t i = 0; i < order.size(); ++i) sortedExtras[i] = extras[order[i]];
-    extras.swap(sortedExtras);
+}
+
+// Bucket offsets of `count` items by key(i) < buckets: offsets[b] is where bucket b starts.
+template <class Key>
+void bucketOffsets(std::size_t count, std::size_t buckets, Key&& key, std::vector<std::uint32_t>& offsets) {
+  offsets.assign(buckets + 1, 0);
+  for (std::size_t i = 0; i < count; ++i) ++offsets[key(i) + 1];
+  for (std::size_t b = 0; b < buckets; ++b) offsets[b + 1] += offsets[b];
+}
+
+// Orders `found` (the crossings in the search's order) along the subject into r.crossings and
+// along the clip into r.clipOrder.
+template <class Arithmetic, class Extra>
+void orderAlongEdges(Phase1Result& r, const std::vector<Crossing>& found, const std::vector<Extra>& foundExtras,
+                     const Arithmetic& arithmetic, unsigned threads) {
+  constexpr bool kHasExtra = !std::is_empty_v<Extra>;
+  constexpr bool kExact = Arithmetic::kAlphaOrderIsExact;
+  const std::size_t k = found.size();
+  const Extra none{};
+  auto extraOf = [&](const std::vector<Extra>& extras, std::size_t i) -> const Extra& {
+    if constexpr (kHasExtra) return extras[i];
+    return none;
+  };
+  // Per piece of the sorts: their own counters (the exact arithmetic's fallbacks), summed after.
+  std::vector<ExactCounters> counters(4 * std::size_t{std::max(threads, 1u)} + 1);
+  std::vector<Arithmetic> local;
+  for (ExactCounters& c : counters) local.emplace_back(c);
+  thread_local std::vector<std::uint32_t> offsets, at;
+  thread_local std::vector<SortItem> items;
+  items.resize(k);
+
+  // Along the subject: crossings scattered into their edge's bucket (in the search's order), each
+  // bucket sorted, and the crossings written in that order.
+  bucketOffsets(k, r.subject.size(), [&](std::size_t i) { return found[i].subjectEdge; }, offsets);
+  at.assign(offsets.begin(), offsets.end() - 1);
+  for (std::size_t i = 0; i < k; ++i) {
+    const Crossing& c = found[i];
+    items[at[c.subjectEdge]++] = {c.alphaSubject, arithmetic.errorAlongSubject(extraOf(foundExtras, i)), c.clipEdge,
+                                  static_cast<std::uint32_t>(i)};
+  }
+  sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::size_t p) {
+    return local[p].compareAlongSubject(a, b, found.data(), foundExtras.data(), r.subject, r.clip);
+  });
+  r.crossings.resize(k);
+  thread_local std::vector<Extra> extras;
+  if constexpr (kHasExtra) extras.resize(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    r.crossings[i] = found[items[i].index];
+    if constexpr (kHasExtra) extras[i] = foundExtras[items[i].index];
   }
 
-  for (std::size_t i = 0; i < cs.size(); ++i) keys[i] = cs[i].clipEdge;
-  r.clipOrder = countingSort(keys, r.clip.size(), offsets);
-  sortBuckets(r.clipOrder, offsets, [&](std::uint32_t a, std::uint32_t b) {
-    if (const int c = arithmetic.compareAlongClip(cs[a], extra(a), cs[b], extra(b), r.subject, r.clip)) return c < 0;
-    return cs[a].subjectEdge < cs[b].subjectEdge;
+  // Along the clip: the same, from the crossings in subject order.
+  const auto& cs = r.crossings;
+  bucketOffsets(k, r.clip.size(), [&](std::size_t i) { return cs[i].clipEdge; }, offsets);
+  at.assign(offsets.begin(), offsets.end() - 1);
+  for (std::size_t i = 0; i < k; ++i) {
+    items[at[cs[i].clipEdge]++] = {cs[i].alphaClip, arithmetic.errorAlongClip(extraOf(extras, i)), cs[i].subjectEdge,
+                                   static_cast<std::uint32_t>(i)};
+  }
+  sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::size_t p) {
+    return local[p].compareAlongClip(a, b, cs.data(), extras.data(), r.subject, r.clip);
   });
+  r.clipOrder.resize(k);
+  for (std::size_t i = 0; i < k; ++i) r.clipOrder[i] = items[i].index;
+  for (const ExactCounters& c : counters) {
+    arithmetic.counters().filterFailures += c.filterFailures;
+    arithmetic.counters().exactConstructions += c.exactConstructions;
+  }
 }
 
 template <class Search, class Arithmetic>
 Phase1Result findIntersections(Operand subject, Operand clip, const Search& search, const Arithmetic& arithmetic,
-                               Stats& stats, Degeneracies* degeneracies = nullptr) {
+                               Stats& stats, Degeneracies* degeneracies = nullptr, unsigned threads = 1) {
   using Extra = typename Arithmetic::Extra;
   Phase1Result r{std::move(subject), std::move(clip), {}, {}};
-  std::vector<Extra> extras;
-  Degeneracies found;
-  search.forEachCandidate(r.subject, r.clip, [&](std::uint32_t se, std::uint32_t ce) {
-    ++stats.candidatePairs;
-    Crossing crossing;
-    Extra extra;
-    const PairTest t = arithmetic.test(r.subject, se, r.clip, ce, crossing, extra);
-    if (t.kind == PairTest::Kind::Crossing) {
-      r.crossings.push_back(crossing);
-      if constexpr (!std::is_empty_v<Extra>) extras.push_back(extra);
-    } else if constexpr (Arithmetic::kReportsDegeneracies) {
-      if (t.kind == PairTest::Kind::Degenerate) {
-        if (t.onOtherEdge & PairTest::kSubjectFrom) found.subject.push_back(se);
-        if (t.onOtherEdge & PairTest::kSubjectTo) found.subject.push_back(r.subject.next[se]);
-        if (t.onOtherEdge & PairTest::kClipFrom) found.clip.push_back(ce);
-        if (t.onOtherEdge & PairTest::kClipTo) found.clip.push_back(r.clip.next[ce]);
-      }
-    }
+  const auto plan = search.plan(r.subject, r.clip);
+  // A piece is worth a thread from about 2^15 candidate pairs on.
+  const Pieces pieces =
+      piecesFor(plan.units, threads, std::max<std::size_t>(1, (std::size_t{1} << 15) / std::max<std::size_t>(plan.pairsPerUnit, 1)));
+  auto& buffers = crossingBuffers<Extra>(pieces.pieces);
+  runPieces(pieces, threads, [&](std::size_t p) {
+    CrossingBuffer<Extra>& buffer = buffers[p];
+    const Arithmetic local(buffer.counters);
+    plan.visit(
+        pieces.begin(p), pieces.end(p),
+        [&](std::uint32_t se) { local.testRow(r.subject, se, r.clip, buffer); },
+        [&](std::uint32_t se, std::uint32_t ce) { local.testPair(r.subject, se, r.clip, ce, buffer); });
   });
+
+  Degeneracies found;
+  std::size_t total = 0;
+  for (std::size_t p = 0; p < pieces.pieces; ++p) {
+    CrossingBuffer<Extra>& b = buffers[p];
+    stats.candidatePairs += b.pairs;
+    arithmetic.counters().filterFailures += b.counters.filterFailures;
+    arithmetic.counters().exactConstructions += b.counters.exactConstructions;
+    total += b.crossings.size();
+    if constexpr (Arithmetic::kReportsDegeneracies) {
+      found.subject.insert(found.subject.end(), b.degenerateSubject.begin(), b.degenerateSubject.end());
+      found.clip.insert(found.clip.end(), b.degenerateClip.begin(), b.degenerateClip.end());
+    }
+  }
   if constexpr (Arithmetic::kReportsDegeneracies) {
     if (!found.empty()) {
       for (auto* vs : {&found.subject, &found.clip}) {
@@ -125,8 +259,23 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
       return r;  // unordered: the caller must resolve the degeneracies first
     }
   }
-  stats.intersections = r.crossings.size();
-  orderAlongEdges(r, extras, arithmetic);
+  stats.intersections = total;
+  if (pieces.pieces == 1) {
+    orderAlongEdges(r, buffers[0].crossings, buffers[0].extras, arithmetic, threads);
+  } else {
+    // The pieces' crossings in piece order: the order one thread would have found them in.
+    thread_local std::vector<Crossing> all;
+    thread_local std::vector<Extra> allExtras;
+    all.clear(), allExtras.clear();
+    for (std::size_t p = 0; p < pieces.pieces; ++p) {
+      all.insert(all.end(), buffers[p].crossings.begin(), buffers[p].crossings.end());
+      if constexpr (CrossingBuffer<Extra>::kHasExtra) {
+        allExtras.insert(allExtras.end(), buffers[p].extras.begin(), buffers[p].extras.end());
+      }
+    }
+    orderAlongEdges(r, all, allExtras, arithmetic, threads);
+  }
+  for (std::size_t p = 0; p < pieces.pieces; ++p) buffers[p].trim();
   return r;
 }
 

@@ -18,11 +18,12 @@ bool keepsClipPiecesInsideSubject(Op op) {
   return op == Op::Intersection || op == Op::Difference;
 }
 
-Ring copyRing(const Operand& op, const RingInfo& ring) {
-  return Ring(op.vertices.begin() + ring.firstVertex, op.vertices.begin() + ring.endVertex);
+void copyRing(const Operand& op, const RingInfo& ring, FlatRings& out) {
+  out.points.insert(out.points.end(), op.vertices.begin() + ring.firstVertex, op.vertices.begin() + ring.endVertex);
+  out.closeRing();
 }
 
-void traceOneOp(VertexGraph& g, Op op, Region& out) {
+void traceOneOp(VertexGraph& g, Op op, FlatRings& out) {
   const bool flipSubject = !keepsSubjectPiecesInsideClip(op);
   const bool flipClip = !keepsClipPiecesInsideSubject(op);
   auto forward = [&](std::uint32_t n) { return (g.entry[n] != 0) != (g.isSubjectNode(n) ? flipSubject : flipClip); };
@@ -32,7 +33,7 @@ void traceOneOp(VertexGraph& g, Op op, Region& out) {
 
   for (std::uint32_t first = 0; first < g.firstClipNode; ++first) {
     if (g.visited[first]) continue;
-    Ring traced;
+    std::vector<Point>& traced = out.points;
     std::uint32_t current = first;
     for (std::size_t steps = 0;; ++steps) {
       if (steps > bound) throw ClipFailure("tracing did not close within its bound");
@@ -40,11 +41,13 @@ void traceOneOp(VertexGraph& g, Op op, Region& out) {
       traced.push_back(g.point(current));
       // Along this operand to the next intersection vertex, then over to the other operand.
       if (forward(current)) {
-        g.appendRunForward(current, traced);
-        current = g.next(current);
+        const std::uint32_t to = g.next(current);
+        g.appendRunForward(current, to, traced);
+        current = to;
       } else {
-        g.appendRunBackward(current, traced);
-        current = g.prev(current);
+        const std::uint32_t to = g.prev(current);
+        g.appendRunBackward(current, to, traced);
+        current = to;
       }
       current = g.neighbor(current);
       if (current == first || g.neighbor(current) == first) break;
@@ -52,32 +55,36 @@ void traceOneOp(VertexGraph& g, Op op, Region& out) {
         throw ClipFailure("tracing reached a used intersection vertex (inconsistent entry/exit marks)");
       }
     }
-    out.push_back(std::move(traced));
+    out.closeRing();
   }
 
   for (const RingInfo& ring : g.subjectRings) {
     if (ring.head == kNone && ring.startsInside == keepsSubjectPiecesInsideClip(op)) {
-      out.push_back(copyRing(*g.subject, ring));
+      copyRing(*g.subject, ring, out);
     }
   }
   for (const RingInfo& ring : g.clipRings) {
     if (ring.head == kNone && ring.startsInside == keepsClipPiecesInsideSubject(op)) {
-      out.push_back(copyRing(*g.clip, ring));
+      copyRing(*g.clip, ring, out);
     }
   }
 }
 
 }  // namespace
 
-Region traceResult(VertexGraph& g, Op op) {
-  Region out;
+void traceResult(VertexGraph& g, Op op, FlatRings& out) {
   if (op == Op::Xor) {
     traceOneOp(g, Op::Difference, out);
     traceOneOp(g, Op::ReverseDifference, out);
   } else {
     traceOneOp(g, op, out);
   }
-  return out;
+}
+
+Region traceResult(VertexGraph& g, Op op) {
+  FlatRings out;
+  traceResult(g, op, out);
+  return out.toRegion();
 }
 
 }  // namespace gh::detail

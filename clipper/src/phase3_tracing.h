@@ -6,13 +6,18 @@
 #pragma once
 
 #include "ghclip/operation.h"
+#include "flat_rings.h"
 #include "ghclip/region.h"
 #include "vertex_graph.h"
 
 namespace gh::detail {
 
-// Throws ClipFailure if a trace does not close within a bound of twice the node count, or
-// reaches an intersection vertex a previous trace used (inconsistent entry/exit marks).
+// Appends the answer's rings to `out`. Throws ClipFailure if a trace does not close within a
+// bound of twice the node count, or reaches an intersection vertex a previous trace used
+// (inconsistent entry/exit marks).
+void traceResult(VertexGraph& graph, Op op, FlatRings& out);
+
+// The same as a Region (for tests).
 Region traceResult(VertexGraph& graph, Op op);
 
 }  // namespace gh::detail

@@ -1,6 +1,5 @@
 #include "vertex_graph.h"
 
-#include <iterator>
 
 namespace gh::detail {
 namespace {
@@ -21,44 +20,6 @@ void appendRings(const Operand& operand, std::uint32_t base, std::uint32_t count
 }
 
 }  // namespace
-
-void VertexGraph::appendRunForward(std::uint32_t from, Ring& out) const {
-  const std::uint32_t to = next(from);
-  const std::uint32_t fromEdge = edge(from), toEdge = edge(to);
-  // Same edge and `to` after `from` along it: no original vertex in between.
-  if (fromEdge == toEdge && to > from) return;
-  const RingInfo& ring = ringOf(from);
-  const Point* v = operandOf(from).vertices.data();
-  // Otherwise the vertices after from's edge start, up to to's edge start, cyclically in the ring:
-  // one contiguous slice, or two when the run wraps past the ring's last vertex.
-  const std::uint32_t first = fromEdge + 1 == ring.endVertex ? ring.firstVertex : fromEdge + 1;
-  if (first <= toEdge) {
-    out.insert(out.end(), v + first, v + toEdge + 1);
-  } else {
-    out.insert(out.end(), v + first, v + ring.endVertex);
-    out.insert(out.end(), v + ring.firstVertex, v + toEdge + 1);
-  }
-}
-
-void VertexGraph::appendRunBackward(std::uint32_t from, Ring& out) const {
-  const std::uint32_t to = prev(from);
-  const std::uint32_t fromEdge = edge(from), toEdge = edge(to);
-  if (fromEdge == toEdge && to < from) return;
-  const RingInfo& ring = ringOf(from);
-  const Point* v = operandOf(from).vertices.data();
-  // The forward run from `to` to `from`, reversed: from's edge down to the vertex after to's edge
-  // start.
-  const std::uint32_t last = toEdge + 1 == ring.endVertex ? ring.firstVertex : toEdge + 1;
-  auto backwards = [&out, v](std::uint32_t hi, std::uint32_t lo) {  // v[hi], v[hi-1], ..., v[lo]
-    out.insert(out.end(), std::make_reverse_iterator(v + hi + 1), std::make_reverse_iterator(v + lo));
-  };
-  if (last <= fromEdge) {
-    backwards(fromEdge, last);
-  } else {
-    backwards(fromEdge, ring.firstVertex);
-    backwards(ring.endVertex - 1, last);
-  }
-}
 
 VertexGraph buildVertexGraph(const Phase1Result& r) {
   VertexGraph g;

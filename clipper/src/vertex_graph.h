@@ -70,9 +70,41 @@ struct VertexGraph {
   }
 
   // Appends to `out` the original vertices passed going forward from intersection vertex `from`
-  // to the next one, or backward from `from` to the previous one.
-  void appendRunForward(std::uint32_t from, Ring& out) const;
-  void appendRunBackward(std::uint32_t from, Ring& out) const;
+  // to the next one `to` (= next(from)), or backward from `from` to the previous one (= prev(from)).
+  void appendRunForward(std::uint32_t from, std::uint32_t to, std::vector<Point>& out) const {
+    const std::uint32_t fromEdge = edge(from), toEdge = edge(to);
+    // Same edge and `to` after `from` along it: no original vertex in between.
+    if (fromEdge == toEdge && to > from) return;
+    const RingInfo& ring = ringOf(from);
+    const Point* v = operandOf(from).vertices.data();
+    // Otherwise the vertices after from's edge start, up to to's edge start, cyclically in the
+    // ring: one contiguous slice, or two when the run wraps past the ring's last vertex.
+    const std::uint32_t first = fromEdge + 1 == ring.endVertex ? ring.firstVertex : fromEdge + 1;
+    if (first <= toEdge) {
+      out.insert(out.end(), v + first, v + toEdge + 1);
+    } else {
+      out.insert(out.end(), v + first, v + ring.endVertex);
+      out.insert(out.end(), v + ring.firstVertex, v + toEdge + 1);
+    }
+  }
+  void appendRunBackward(std::uint32_t from, std::uint32_t to, std::vector<Point>& out) const {
+    const std::uint32_t fromEdge = edge(from), toEdge = edge(to);
+    if (fromEdge == toEdge && to < from) return;
+    const RingInfo& ring = ringOf(from);
+    const Point* v = operandOf(from).vertices.data();
+    // The forward run from `to` to `from`, reversed: from's edge down to the vertex after to's
+    // edge start.
+    const std::uint32_t last = toEdge + 1 == ring.endVertex ? ring.firstVertex : toEdge + 1;
+    auto backwards = [&out, v](std::uint32_t hi, std::uint32_t lo) {  // v[hi], v[hi-1], ..., v[lo]
+      for (std::uint32_t i = hi + 1; i-- > lo;) out.push_back(v[i]);
+    };
+    if (last <= fromEdge) {
+      backwards(fromEdge, last);
+    } else {
+      backwards(fromEdge, ring.firstVertex);
+      backwards(ring.endVertex - 1, last);
+    }
+  }
 };
 
 // Builds the lists from phase 1's ordered crossings; phase 2 then marks them. The graph refers to

@@ -13,6 +13,7 @@
 #include <vector>
 #include <string>
 
+#include "crossing_floor.h"
 #include "ghclip/clip.h"
 #include "ghclip/measure.h"
 #include "ghoracle/exact_oracle.h"
@@ -35,11 +36,24 @@ inline const std::vector<work::Workload>& seededPool(const std::string& workload
 }
 
 // Our variants by the name of their combination of arithmetic and search (gh::parseOptions:
-// "naive", "sweep", "exact", "exact-allpairs", "exact-sweep") or a peer ("clipper6", ...), on a pool of workloads: iteration i clips pool[i % size], as the paper
+// "naive", "sweep", "exact", "exact-allpairs", "exact-sweep"), a peer ("clipper6", ...), or
+// "crossings", the floor under phase 1 (crossing_floor.h: its answers are not clips, not checked), on a pool of workloads: iteration i clips pool[i % size], as the paper
 // averaged over fresh random polygons. Every answer of the last round through the pool is
 // checked (exact oracle for small inputs, sampling oracle otherwise).
 inline void runMethodOnPool(benchmark::State& state, const std::string& method, const std::vector<work::Workload>& pool,
                             Op op) {
+  if (method == "crossings") {
+    // The floor (clipper/src/crossing_floor.h): every pair tested, every crossing constructed.
+    std::vector<detail::Crossing> crossings;
+    std::size_t i = 0, found = 0;
+    for (auto _ : state) {
+      const auto& w = pool[i++ % pool.size()];
+      found += detail::crossingFloor(w.subject, w.clip, crossings);
+      benchmark::DoNotOptimize(crossings.data());
+    }
+    state.counters["intersections"] = static_cast<double>(found) / static_cast<double>(std::max<std::size_t>(i, 1));
+    return;
+  }
   std::vector<Region> results(pool.size());
   std::vector<Stats> stats(pool.size());
   std::size_t i = 0;

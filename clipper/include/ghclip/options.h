@@ -39,7 +39,13 @@ struct Options {
   Search search = Search::Auto;
   // Drop rings with fewer than 3 distinct vertices instead of throwing InvalidInput.
   bool sanitize = false;
+  // Threads for the parallel parts of a clip (phase 1's search and ordering, phase 2's ring
+  // starts), 0 for every core. Answers do not depend on it: bit for bit the same as one thread.
+  unsigned threads = 1;
 };
+
+// What threads = 0 means here: the hardware's threads (at least 1).
+unsigned availableThreads();
 
 // The usual combinations by name.
 enum class Variant {

@@ -77,6 +77,17 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
   return {PairTest::Kind::Crossing, 0};
 }
 
+void ExactArithmetic::testRow(const Operand& subject, std::uint32_t se, const Operand& clip,
+                              CrossingBuffer<Extra>& into) const {
+  const auto m = static_cast<std::uint32_t>(clip.size());
+  into.pairs += m;
+  Crossing c;
+  Extra e;
+  for (std::uint32_t ce = 0; ce < m; ++ce) {
+    if (test(subject, se, clip, ce, c, e).kind == PairTest::Kind::Crossing) into.add(c, e);
+  }
+}
+
 int ExactArithmetic::exactlyAlongSubject(const Crossing& a, const Extra&, const Crossing& b, const Extra&,
                                          const Operand& subject, const Operand& clip) const {
   const std::uint32_t e = a.subjectEdge;

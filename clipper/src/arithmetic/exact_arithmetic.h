@@ -10,6 +10,7 @@
 
 #include "arithmetic/pair_test.h"
 #include "operand.h"
+#include "phase1_buffers.h"
 #include "phase1_result.h"
 #include "predicates/exact_counters.h"
 
@@ -17,6 +18,8 @@ namespace gh::detail {
 
 class ExactArithmetic {
  public:
+  // Alpha is only an approximation of the order along an edge: it is decided exactly.
+  static constexpr bool kAlphaOrderIsExact = false;
   static constexpr bool kReportsDegeneracies = false;
   // The limit eps -> 0 leaves zero-width parts (slivers, spikes, seams) for clean-up to remove.
   static constexpr bool kLeavesZeroWidthParts = true;
@@ -31,23 +34,36 @@ class ExactArithmetic {
   };
 
   explicit ExactArithmetic(ExactCounters& counters) : counters_(&counters) {}
+  ExactCounters& counters() const { return *counters_; }
 
   PairTest test(const Operand& subject, std::uint32_t subjectEdge, const Operand& clip, std::uint32_t clipEdge,
                 Crossing& out, Extra& extra) const;
+  void testPair(const Operand& subject, std::uint32_t se, const Operand& clip, std::uint32_t ce,
+                CrossingBuffer<Extra>& into) const {
+    ++into.pairs;
+    Crossing c;
+    Extra e;
+    if (test(subject, se, clip, ce, c, e).kind == PairTest::Kind::Crossing) into.add(c, e);
+  }
+  // Subject edge se against every clip edge.
+  void testRow(const Operand& subject, std::uint32_t se, const Operand& clip, CrossingBuffer<Extra>& into) const;
 
   // Exact order of two crossings on one edge: -1 (a first), +1, or 0 (one point in the limit,
-  // only when the two other edges lie on one line).
-  // Most pairs are decided by their certified position intervals (inline, for the sort); the
-  // rest by the exact predicate.
-  int compareAlongSubject(const Crossing& a, const Extra& ea, const Crossing& b, const Extra& eb,
+  // only when the two other edges lie on one line). Most pairs are decided by their certified
+  // position intervals (inline, for the sort); the rest by the exact predicate.
+  double errorAlongSubject(const Extra& e) const { return e.errSubject; }
+  double errorAlongClip(const Extra& e) const { return e.errClip; }
+  template <class Item>
+  int compareAlongSubject(const Item& a, const Item& b, const Crossing* cs, const Extra* extras,
                           const Operand& subject, const Operand& clip) const {
-    if (const int quick = byIntervals(a.alphaSubject, ea.errSubject, b.alphaSubject, eb.errSubject)) return quick;
-    return exactlyAlongSubject(a, ea, b, eb, subject, clip);
+    if (const int quick = byIntervals(a.alpha, a.err, b.alpha, b.err)) return quick;
+    return exactlyAlongSubject(cs[a.index], extras[a.index], cs[b.index], extras[b.index], subject, clip);
   }
-  int compareAlongClip(const Crossing& a, const Extra& ea, const Crossing& b, const Extra& eb,
-                       const Operand& subject, const Operand& clip) const {
-    if (const int quick = byIntervals(a.alphaClip, ea.errClip, b.alphaClip, eb.errClip)) return quick;
-    return exactlyAlongClip(a, ea, b, eb, subject, clip);
+  template <class Item>
+  int compareAlongClip(const Item& a, const Item& b, const Crossing* cs, const Extra* extras, const Operand& subject,
+                       const Operand& clip) const {
+    if (const int quick = byIntervals(a.alpha, a.err, b.alpha, b.err)) return quick;
+    return exactlyAlongClip(cs[a.index], extras[a.index], cs[b.index], extras[b.index], subject, clip);
   }
 
   bool subjectVertexInsideClip(const Operand& subject, std::uint32_t v, const Operand& clip) const;

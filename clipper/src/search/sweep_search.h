@@ -131,16 +131,38 @@ void walkChainPair(const Operand& opA, const MonotoneChains& a, std::uint32_t i,
 // overlapping chain pair is walked. Cost O((n + m) + c log c + P) for c chains and P pairs
 // overlapping in x; no sort of individual edges, which is what made a plain edge sweep slow.
 struct SweepSearch {
-  template <class Visit>
-  void forEachCandidate(const Operand& subject, const Operand& clip, Visit&& visit) const {
-    const MonotoneChains cs = monotoneChains(subject), cc = monotoneChains(clip);
-    std::vector<EdgeBox> bs = cs.box, bc = cc.box;
-    auto byMinX = [](const EdgeBox& p, const EdgeBox& q) {
-      return p.minX < q.minX || (p.minX == q.minX && p.edge < q.edge);
-    };
+  // The work as units that can be visited in pieces: a unit is one pair of overlapping chains,
+  // in the order the sweep met them.
+  struct Plan {
+    const Operand* subject;
+    const Operand* clip;
+    MonotoneChains subjectChains, clipChains;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> chainPairs;
+    std::size_t units = 0;
+    std::size_t pairsPerUnit = 16;  // for splitting the work: a rough mean per chain pair
+    template <class OnRow, class OnPair>
+    void visit(std::size_t begin, std::size_t end, OnRow&&, OnPair&& onPair) const {
+      for (std::size_t u = begin; u < end; ++u) {
+        walkChainPair(*subject, subjectChains, chainPairs[u].first, *clip, clipChains, chainPairs[u].second, onPair);
+      }
+    }
+  };
+
+  Plan plan(const Operand& subject, const Operand& clip) const {
+    Plan p{&subject, &clip, monotoneChains(subject), monotoneChains(clip), {}, 0, 16};
+    std::vector<EdgeBox> bs = p.subjectChains.box, bc = p.clipChains.box;
+    auto byMinX = [](const EdgeBox& a, const EdgeBox& b) { return a.minX < b.minX || (a.minX == b.minX && a.edge < b.edge); };
     std::sort(bs.begin(), bs.end(), byMinX);
     std::sort(bc.begin(), bc.end(), byMinX);
-    sweepOverlaps(bs, bc, [&](std::uint32_t i, std::uint32_t j) { walkChainPair(subject, cs, i, clip, cc, j, visit); });
+    sweepOverlaps(bs, bc, [&p](std::uint32_t i, std::uint32_t j) { p.chainPairs.emplace_back(i, j); });
+    p.units = p.chainPairs.size();
+    return p;
+  }
+
+  template <class Visit>
+  void forEachCandidate(const Operand& subject, const Operand& clip, Visit&& visit) const {
+    const Plan p = plan(subject, clip);
+    p.visit(0, p.units, [](std::uint32_t) {}, visit);
   }
 };
 

@@ -1,0 +1,23 @@
+#include "crossing_floor.h"
+
+#include "arithmetic/paper_arithmetic.h"
+
+namespace gh::detail {
+
+std::size_t crossingFloor(const Region& subject, const Region& clip, std::vector<Crossing>& out) {
+  // Validated and flattened as gh::clip does it, so the two are timed on the same footing.
+  const Operand s(subject, false), c(clip, false);
+  ExactCounters counters;
+  const PaperArithmetic paper(counters);
+  PaperArithmetic::Extra none;
+  out.clear();
+  Crossing crossing;
+  for (std::uint32_t i = 0; i < s.size(); ++i) {
+    for (std::uint32_t j = 0; j < c.size(); ++j) {
+      if (paper.test(s, i, c, j, crossing, none).kind == PairTest::Kind::Crossing) out.push_back(crossing);
+    }
+  }
+  return out.size();
+}
+
+}  // namespace gh::detail

@@ -1,0 +1,18 @@
+// The floor under phase 1, for benchmarks (experiments/table_benchmark, Table 1's "crossings
+// only" column): the paper's all-pairs loop that tests every subject edge against every clip edge
+// with the paper arithmetic's pair test and constructs every crossing point, and nothing else: no
+// ordering, no graph, no tracing, no degeneracy handling. A clip cannot cost less than this.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "ghclip/region.h"
+#include "phase1_result.h"
+
+namespace gh::detail {
+
+// The crossings of the validated operands, in the loop's order; returns how many.
+std::size_t crossingFloor(const Region& subject, const Region& clip, std::vector<Crossing>& out);
+
+}  // namespace gh::detail

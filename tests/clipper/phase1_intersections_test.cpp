@@ -1,0 +1,108 @@
+// Phase 1 (phase1_intersections.h): the sort along an edge gives the one sorted order of the
+// arithmetic's total order, whatever the approximations it starts from (ties, unbounded and
+// non-finite alphas included), and phase 1 gives the same result on one thread and on several.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "arithmetic/exact_arithmetic.h"
+#include "arithmetic/paper_arithmetic.h"
+#include "ghwork/generators.h"
+#include "paper_perturbation.h"
+#include "phase1_intersections.h"
+#include "search/all_pairs_search.h"
+#include "search/sweep_search.h"
+
+namespace gh::detail {
+namespace {
+
+// Items whose true positions are `truth` (ties allowed), given to the sort as approximations
+// alpha within err of the truth, or as NaN or infinity with an unbounded error. The comparison
+// is the truth's, as an arithmetic's exact comparison would be; ties go to the other edge.
+RC_GTEST_PROP(SortAlongEdge, GivesTheTotalOrderFromAnyApproximation, ()) {
+  const int s = *rc::gen::inRange(0, 120);
+  std::vector<double> truth(static_cast<std::size_t>(s));
+  std::vector<SortItem> items;
+  for (int i = 0; i < s; ++i) {
+    truth[static_cast<std::size_t>(i)] = *rc::gen::inRange(0, 12) / 11.0;  // few values: many ties
+    const int kind = *rc::gen::inRange(0, 6);
+    double alpha = truth[static_cast<std::size_t>(i)], err = 0;
+    if (kind == 1) err = 1e-3, alpha += *rc::gen::inRange(-1000, 1001) * 1e-6;
+    if (kind == 2) err = 0.3, alpha += *rc::gen::inRange(-1000, 1001) * 3e-4;
+    if (kind == 3) err = INFINITY, alpha = std::numeric_limits<double>::quiet_NaN();
+    if (kind == 4) err = INFINITY, alpha = INFINITY;
+    items.push_back({alpha, err, static_cast<std::uint32_t>(1000 - i), static_cast<std::uint32_t>(i)});
+  }
+  auto compare = [&truth](const SortItem& a, const SortItem& b) {
+    const double x = truth[a.index], y = truth[b.index];
+    return (x > y) - (x < y);
+  };
+  std::vector<SortItem> expected = items;
+  std::sort(expected.begin(), expected.end(), [&](const SortItem& a, const SortItem& b) {
+    if (const int c = compare(a, b)) return c < 0;
+    return a.other < b.other;
+  });
+  std::vector<SortItem> scratch;
+  std::vector<std::uint32_t> slots;
+  sortAlongEdge<false>(items.data(), items.data() + items.size(), scratch, slots, compare);
+  for (std::size_t i = 0; i < items.size(); ++i) RC_ASSERT(items[i].index == expected[i].index);
+}
+
+// Where alpha is the order itself (the paper's), the spread and the slots' sorts alone suffice.
+RC_GTEST_PROP(SortAlongEdge, SortsByAlphaThenTheOtherEdge, ()) {
+  const int s = *rc::gen::inRange(0, 300);
+  std::vector<SortItem> items;
+  for (int i = 0; i < s; ++i) {
+    const double alpha = *rc::gen::element(0.0, -0.0, 1.0, 0.5, 1e-300) + *rc::gen::inRange(0, 50) / 64.0;
+    items.push_back({alpha, 0, static_cast<std::uint32_t>(*rc::gen::inRange(0, 1 << 20)) * 512u + static_cast<std::uint32_t>(i),
+                     static_cast<std::uint32_t>(i)});
+  }
+  std::vector<SortItem> expected = items;
+  std::sort(expected.begin(), expected.end(), [](const SortItem& a, const SortItem& b) {
+    if (a.alpha != b.alpha) return a.alpha < b.alpha;
+    return a.other < b.other;
+  });
+  std::vector<SortItem> scratch;
+  std::vector<std::uint32_t> slots;
+  sortAlongEdge<true>(items.data(), items.data() + items.size(), scratch, slots,
+                      [](const SortItem& a, const SortItem& b) { return (a.alpha > b.alpha) - (a.alpha < b.alpha); });
+  for (std::size_t i = 0; i < items.size(); ++i) RC_ASSERT(items[i].index == expected[i].index);
+}
+
+bool samePhase1(const Phase1Result& a, const Phase1Result& b) {
+  if (a.crossings.size() != b.crossings.size() || a.clipOrder != b.clipOrder) return false;
+  for (std::size_t i = 0; i < a.crossings.size(); ++i) {
+    const Crossing& x = a.crossings[i];
+    const Crossing& y = b.crossings[i];
+    if (x.subjectEdge != y.subjectEdge || x.clipEdge != y.clipEdge || !(x.point == y.point)) return false;
+  }
+  return true;
+}
+
+// Threads split the search and the sorts; the answer is the one-thread answer, bit for bit.
+TEST(Phase1, SameOnEveryNumberOfThreads) {
+  for (const char* name : {"random", "circles", "grid", "bitset-grid"}) {
+    const work::Workload w = work::generate(name, std::string(name) == "circles" ? 20000 : 400, 5);
+    ExactCounters c1, c4;
+    Stats s1, s4;
+    const Phase1Result one = findIntersections(Operand(w.subject, false), Operand(w.clip, false), SweepSearch{},
+                                               ExactArithmetic(c1), s1, nullptr, 1);
+    const Phase1Result four = findIntersections(Operand(w.subject, false), Operand(w.clip, false), SweepSearch{},
+                                                ExactArithmetic(c4), s4, nullptr, 4);
+    EXPECT_TRUE(samePhase1(one, four)) << name;
+    EXPECT_EQ(s1.candidatePairs, s4.candidatePairs) << name;
+    EXPECT_EQ(c1.filterFailures, c4.filterFailures) << name;
+    Stats p1, p4;
+    const Phase1Result paperOne = findIntersectionsPerturbed(Operand(w.subject, false), Operand(w.clip, false),
+                                                             AllPairsSearch{}, PaperArithmetic(c1), p1, 1);
+    const Phase1Result paperFour = findIntersectionsPerturbed(Operand(w.subject, false), Operand(w.clip, false),
+                                                              AllPairsSearch{}, PaperArithmetic(c4), p4, 4);
+    EXPECT_TRUE(samePhase1(paperOne, paperFour)) << name;
+    EXPECT_EQ(p1.perturbations, p4.perturbations) << name;
+  }
+}
+
+}  // namespace
+}  // namespace gh::detail
