@@ -356,7 +356,7 @@ Region CleanUp::dissolveSeams(const Region& region) const {
 
 }  // namespace
 
-Region cleanedUp(FlatRings rings, bool dissolve, ExactCounters& counters) {
+Region cleanedUp(FlatRings& rings, bool dissolve, ExactCounters& counters) {
   const CleanUp cleanUp(counters);
   // Every ring simplified where it is, then moved down over what earlier rings gave up.
   std::vector<Point>& points = rings.points;
@@ -387,7 +387,8 @@ Region cleanedUp(FlatRings rings, bool dissolve, ExactCounters& counters) {
 }
 
 Region cleanedUp(const Region& region, bool dissolve, ExactCounters& counters) {
-  return cleanedUp(FlatRings::from(region), dissolve, counters);
+  FlatRings rings = FlatRings::from(region);
+  return cleanedUp(rings, dissolve, counters);
 }
 
 }  // namespace gh::detail

@@ -13,6 +13,7 @@
 #include "phase1_intersections.h"
 #include "phase2_marking.h"
 #include "phase3_tracing.h"
+#include "recycled.h"
 #include "search/all_pairs_search.h"
 #include "search/search_choice.h"
 #include "search/sweep_search.h"
@@ -51,7 +52,7 @@ Region clipWith(Operand s, Operand c, Op op, const Options& options, Stats& stat
   const unsigned threads = options.threads == 0 ? availableThreads() : options.threads;
   auto t = Clock::now();
   const bool sweep = options.search == Search::Auto ? autoSweeps(arithmetic, s, c) : options.search == Search::Sweep;
-  const Phase1Result crossings =
+  Phase1Result crossings =
       sweep ? phase1(std::move(s), std::move(c), SweepSearch{}, arithmetic, stats, threads)
             : phase1(std::move(s), std::move(c), AllPairsSearch{}, arithmetic, stats, threads);
   stats.phase1Seconds = secondsSince(t);
@@ -64,10 +65,14 @@ Region clipWith(Operand s, Operand c, Op op, const Options& options, Stats& stat
 
   t = Clock::now();
   FlatRings traced;
-  traceResult(graph, op, traced);
-  Region result = cleanedUp(std::move(traced), Arithmetic::kLeavesZeroWidthParts, counters);
+  borrow<Spare::TracedPoints>(traced.points);
+  traceResult(graph, op, traced, threads);
+  Region result = cleanedUp(traced, Arithmetic::kLeavesZeroWidthParts, counters);
   stats.phase3Seconds = secondsSince(t);
 
+  giveBack<Spare::SubjectNodes>(crossings.subjectNodes);
+  giveBack<Spare::ClipNodes>(crossings.clipNodes);
+  giveBack<Spare::TracedPoints>(traced.points);
   stats.filterFailures = counters.filterFailures;
   stats.exactConstructions = counters.exactConstructions;
   return result;

@@ -4,13 +4,21 @@
 
 namespace gh::detail {
 
-std::size_t crossingFloor(const Region& subject, const Region& clip, std::vector<Crossing>& out) {
+std::size_t crossingFloor(const Region& subject, const Region& clip, std::vector<Crossing>& out, bool vectorized) {
   // Validated and flattened as gh::clip does it, so the two are timed on the same footing.
   const Operand s(subject, false), c(clip, false);
   ExactCounters counters;
   const PaperArithmetic paper(counters);
   PaperArithmetic::Extra none;
   out.clear();
+  if (vectorized && rowKernelsAvailable()) {
+    const EdgeArrays arrays(c);
+    CrossingBuffer<PaperArithmetic::Extra> buffer;
+    buffer.crossings.swap(out);
+    for (std::uint32_t i = 0; i < s.size(); ++i) paper.testRow(s, i, c, &arrays, buffer);
+    buffer.crossings.swap(out);
+    return out.size();
+  }
   Crossing crossing;
   for (std::uint32_t i = 0; i < s.size(); ++i) {
     for (std::uint32_t j = 0; j < c.size(); ++j) {

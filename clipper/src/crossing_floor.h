@@ -12,7 +12,9 @@
 
 namespace gh::detail {
 
-// The crossings of the validated operands, in the loop's order; returns how many.
-std::size_t crossingFloor(const Region& subject, const Region& clip, std::vector<Crossing>& out);
+// The crossings of the validated operands, in the loop's order; returns how many. `vectorized`:
+// the rows through the vectorized pair test (row_kernels.h) where the processor has it, else the
+// plain pair-by-pair loop.
+std::size_t crossingFloor(const Region& subject, const Region& clip, std::vector<Crossing>& out, bool vectorized);
 
 }  // namespace gh::detail

@@ -31,10 +31,12 @@
 #include <vector>
 
 #include "arithmetic/pair_test.h"
+#include "arithmetic/row_kernels.h"
 #include "ghclip/stats.h"
 #include "parallel.h"
 #include "phase1_buffers.h"
 #include "phase1_result.h"
+#include "recycled.h"
 
 namespace gh::detail {
 
@@ -157,8 +159,8 @@ void bucketOffsets(std::size_t count, std::size_t buckets, Key&& key, std::vecto
   for (std::size_t b = 0; b < buckets; ++b) offsets[b + 1] += offsets[b];
 }
 
-// Orders `found` (the crossings in the search's order) along the subject into r.crossings and
-// along the clip into r.clipOrder.
+// Orders `found` (the crossings in the search's order) along the subject into r.subjectNodes and
+// along the clip into r.clipNodes.
 template <class Arithmetic, class Extra>
 void orderAlongEdges(Phase1Result& r, const std::vector<Crossing>& found, const std::vector<Extra>& foundExtras,
                      const Arithmetic& arithmetic, unsigned threads) {
@@ -190,27 +192,36 @@ void orderAlongEdges(Phase1Result& r, const std::vector<Crossing>& found, const 
   sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::size_t p) {
     return local[p].compareAlongSubject(a, b, found.data(), foundExtras.data(), r.subject, r.clip);
   });
-  r.crossings.resize(k);
-  thread_local std::vector<Extra> extras;
-  if constexpr (kHasExtra) extras.resize(k);
+  // The crossings in subject order, as nodes; where each found crossing stands in that order.
+  borrow<Spare::SubjectNodes>(r.subjectNodes);
+  r.subjectNodes.reserve(k);
+  thread_local std::vector<std::uint32_t> position;
+  position.resize(k);
   for (std::size_t i = 0; i < k; ++i) {
-    r.crossings[i] = found[items[i].index];
-    if constexpr (kHasExtra) extras[i] = foundExtras[items[i].index];
+    const Crossing& c = found[items[i].index];
+    r.subjectNodes.push_back({c.point, c.subjectEdge, 0, 0, 0});
+    position[items[i].index] = static_cast<std::uint32_t>(i);
   }
 
-  // Along the clip: the same, from the crossings in subject order.
-  const auto& cs = r.crossings;
-  bucketOffsets(k, r.clip.size(), [&](std::size_t i) { return cs[i].clipEdge; }, offsets);
+  // Along the clip: the same, each node linked to its copy in the subject's list.
+  bucketOffsets(k, r.clip.size(), [&](std::size_t i) { return found[i].clipEdge; }, offsets);
   at.assign(offsets.begin(), offsets.end() - 1);
   for (std::size_t i = 0; i < k; ++i) {
-    items[at[cs[i].clipEdge]++] = {cs[i].alphaClip, arithmetic.errorAlongClip(extraOf(extras, i)), cs[i].subjectEdge,
-                                   static_cast<std::uint32_t>(i)};
+    const Crossing& c = found[i];
+    items[at[c.clipEdge]++] = {c.alphaClip, arithmetic.errorAlongClip(extraOf(foundExtras, i)), c.subjectEdge,
+                               static_cast<std::uint32_t>(i)};
   }
   sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::size_t p) {
-    return local[p].compareAlongClip(a, b, cs.data(), extras.data(), r.subject, r.clip);
+    return local[p].compareAlongClip(a, b, found.data(), foundExtras.data(), r.subject, r.clip);
   });
-  r.clipOrder.resize(k);
-  for (std::size_t i = 0; i < k; ++i) r.clipOrder[i] = items[i].index;
+  borrow<Spare::ClipNodes>(r.clipNodes);
+  r.clipNodes.reserve(k);
+  for (std::uint32_t j = 0; j < k; ++j) {
+    const Crossing& c = found[items[j].index];
+    const std::uint32_t i = position[items[j].index];
+    r.clipNodes.push_back({c.point, c.clipEdge, i, 0, 0});
+    r.subjectNodes[i].neighbor = j;  // independent writes: their cache misses overlap
+  }
   for (const ExactCounters& c : counters) {
     arithmetic.counters().filterFailures += c.filterFailures;
     arithmetic.counters().exactConstructions += c.exactConstructions;
@@ -227,12 +238,15 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
   const Pieces pieces =
       piecesFor(plan.units, threads, std::max<std::size_t>(1, (std::size_t{1} << 15) / std::max<std::size_t>(plan.pairsPerUnit, 1)));
   auto& buffers = crossingBuffers<Extra>(pieces.pieces);
+  // The clip's edges as arrays for the vectorized rows (row_kernels.h), when rows are tested.
+  const EdgeArrays clipArrays = plan.rows && rowKernelsAvailable() ? EdgeArrays(r.clip) : EdgeArrays();
+  const EdgeArrays* arrays = clipArrays.size() ? &clipArrays : nullptr;
   runPieces(pieces, threads, [&](std::size_t p) {
     CrossingBuffer<Extra>& buffer = buffers[p];
     const Arithmetic local(buffer.counters);
     plan.visit(
         pieces.begin(p), pieces.end(p),
-        [&](std::uint32_t se) { local.testRow(r.subject, se, r.clip, buffer); },
+        [&](std::uint32_t se) { local.testRow(r.subject, se, r.clip, arrays, buffer); },
         [&](std::uint32_t se, std::uint32_t ce) { local.testPair(r.subject, se, r.clip, ce, buffer); });
   });
 

@@ -1,5 +1,10 @@
 // What phase 1 hands to phases 2 and 3, whatever the search and arithmetic: data only, so that
 // the vertex graph does not depend on how the crossings were found.
+//
+// The crossings as the paper's two lists of intersection vertices (Section 4, Figure 6), already
+// in order: one node per crossing in order along the subject's edges, one per crossing in order
+// along the clip's, each knowing where its copy stands in the other list. Phases 2 and 3 fill in
+// the rest (vertex_graph.h).
 #pragma once
 
 #include <cstdint>
@@ -10,7 +15,7 @@
 
 namespace gh::detail {
 
-// A proper crossing of a subject edge with a clip edge.
+// A proper crossing of a subject edge with a clip edge, as phase 1 finds it.
 struct Crossing {
   std::uint32_t subjectEdge = 0;
   std::uint32_t clipEdge = 0;
@@ -22,14 +27,28 @@ struct Crossing {
   double alphaClip = 0;
 };
 
+// An intersection vertex in one operand's list (32 bytes: a trace reads one per jump).
+struct Node {
+  Point point;               // the crossing (shared by both copies)
+  std::uint32_t edge;        // the operand edge it lies on
+  std::uint32_t neighbor;    // position of its copy in the other operand's list
+  std::uint32_t ring = 0;    // its ring in its operand (phase 2)
+  std::uint8_t entry = 0;    // phase 2: does the piece after it lie inside the other operand?
+};
+
 struct Phase1Result {
   Operand subject;  // the vertices actually used (perturbed copies for the paper arithmetic)
   Operand clip;
-  // In order along the subject: by edge, then along the edge. A crossing's index here is its
-  // subject intersection vertex.
-  std::vector<Crossing> crossings;
-  // Crossing indices in order along the clip: by edge, then along the edge.
-  std::vector<std::uint32_t> clipOrder;
+  std::vector<Node> subjectNodes;  // the crossings in order along the subject: by edge, then along it
+  std::vector<Node> clipNodes;     // the same crossings in order along the clip
+
+  std::size_t crossingCount() const { return subjectNodes.size(); }
+  // Crossing i in order along the subject: its edges and point.
+  std::uint32_t subjectEdge(std::size_t i) const { return subjectNodes[i].edge; }
+  std::uint32_t clipEdge(std::size_t i) const { return clipNodes[subjectNodes[i].neighbor].edge; }
+  Point point(std::size_t i) const { return subjectNodes[i].point; }
+  // Which crossing (in subject order) is j-th along the clip.
+  std::uint32_t clipOrder(std::size_t j) const { return clipNodes[j].neighbor; }
 };
 
 }  // namespace gh::detail

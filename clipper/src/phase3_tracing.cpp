@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "ghclip/errors.h"
+#include "parallel.h"
+#include "recycled.h"
 
 namespace gh::detail {
 namespace {
@@ -23,40 +25,109 @@ void copyRing(const Operand& op, const RingInfo& ring, FlatRings& out) {
   out.closeRing();
 }
 
-void traceOneOp(VertexGraph& g, Op op, FlatRings& out) {
+// Where the trace goes from an intersection vertex: the node it reaches over in the other
+// operand, and the crossing this vertex is a copy of.
+struct Step {
+  std::uint32_t next;
+  std::uint32_t crossing;
+};
+
+// The original vertices passed from `from` to `to`, forward or backward along the ring.
+std::uint32_t runLength(const VertexGraph& g, std::uint32_t from, std::uint32_t to, bool forward) {
+  const std::uint32_t fromEdge = g.node(from).edge, toEdge = g.node(to).edge;
+  const RingInfo& ring = g.ringOf(from);
+  if (forward) {
+    if (fromEdge == toEdge && to > from) return 0;
+    const std::uint32_t first = fromEdge + 1 == ring.endVertex ? ring.firstVertex : fromEdge + 1;
+    return first <= toEdge ? toEdge + 1 - first : (ring.endVertex - first) + (toEdge + 1 - ring.firstVertex);
+  }
+  if (fromEdge == toEdge && to < from) return 0;
+  const std::uint32_t last = toEdge + 1 == ring.endVertex ? ring.firstVertex : toEdge + 1;
+  return last <= fromEdge ? fromEdge + 1 - last : (fromEdge + 1 - ring.firstVertex) + (ring.endVertex - last);
+}
+
+// Traced in three passes, so that only the second walks the answer's rings one vertex after the
+// other: (1) for every intersection vertex, independently (in pieces over threads), where the
+// trace goes from it and how many points it adds; (2) the walk, over those 8-byte steps only,
+// giving the order of the vertices and the rings; (3) the points written, independently, each
+// vertex at its offset. The walk is what a trace is in the paper, with its checks: it throws
+// ClipFailure if a trace does not close within its bound or reaches a used vertex.
+void traceOneOp(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
   const bool flipSubject = !keepsSubjectPiecesInsideClip(op);
   const bool flipClip = !keepsClipPiecesInsideSubject(op);
-  auto forward = [&](std::uint32_t n) { return (g.entry[n] != 0) != (g.isSubjectNode(n) ? flipSubject : flipClip); };
-  std::fill(g.visited.begin(), g.visited.end(), 0);
-  // Every step moves to another intersection vertex; a closed trace visits each at most once.
-  const std::size_t bound = g.nodeCount() + 4;
+  const std::uint32_t k = g.firstClipNode, nodes = g.nodeCount();
+  // Recycled arrays (recycled.h), every element written before it is read.
+  std::vector<Step> steps;
+  std::vector<std::uint32_t> counts, sequence;
+  std::vector<std::uint8_t> forwards, visited;
+  borrow<Spare::TraceSteps>(steps), borrow<Spare::TraceCounts>(counts), borrow<Spare::TraceFlags>(forwards);
+  borrow<Spare::TraceSequence>(sequence);
+  steps.resize(nodes), counts.resize(nodes), forwards.resize(nodes);
+  const Pieces nodePieces = piecesFor(nodes, threads, 1 << 14);
+  runPieces(nodePieces, threads, [&](std::size_t p) {
+    for (auto n = static_cast<std::uint32_t>(nodePieces.begin(p)); n < nodePieces.end(p); ++n) {
+      const Node& at = g.node(n);
+      const bool forward = (at.entry != 0) != (g.isSubjectNode(n) ? flipSubject : flipClip);
+      const std::uint32_t to = forward ? g.next(n) : g.prev(n);
+      steps[n] = {g.neighbor(to), g.isSubjectNode(n) ? n : at.neighbor};
+      counts[n] = 1 + runLength(g, n, to, forward);
+      forwards[n] = forward;
+    }
+  });
 
-  for (std::uint32_t first = 0; first < g.firstClipNode; ++first) {
-    if (g.visited[first]) continue;
-    std::vector<Point>& traced = out.points;
+  visited.assign(k, 0);
+  std::vector<std::uint32_t> ringEnds;
+  sequence.reserve(k);
+  // Every step moves to another intersection vertex; a closed trace visits each at most once.
+  const std::size_t bound = std::size_t{nodes} + 4;
+  for (std::uint32_t first = 0; first < k; ++first) {
+    if (visited[first]) continue;
     std::uint32_t current = first;
-    for (std::size_t steps = 0;; ++steps) {
-      if (steps > bound) throw ClipFailure("tracing did not close within its bound");
-      g.visited[g.crossingOf(current)] = 1;
-      traced.push_back(g.point(current));
-      // Along this operand to the next intersection vertex, then over to the other operand.
-      if (forward(current)) {
-        const std::uint32_t to = g.next(current);
-        g.appendRunForward(current, to, traced);
-        current = to;
-      } else {
-        const std::uint32_t to = g.prev(current);
-        g.appendRunBackward(current, to, traced);
-        current = to;
-      }
-      current = g.neighbor(current);
-      if (current == first || g.neighbor(current) == first) break;
-      if (g.visited[g.crossingOf(current)]) {
+    for (std::size_t count = 0;; ++count) {
+      if (count > bound) throw ClipFailure("tracing did not close within its bound");
+      visited[steps[current].crossing] = 1;
+      sequence.push_back(current);
+      current = steps[current].next;
+      const std::uint32_t crossing = steps[current].crossing;
+      if (crossing == first) break;  // back at the first vertex, or at its other copy
+      if (visited[crossing]) {
         throw ClipFailure("tracing reached a used intersection vertex (inconsistent entry/exit marks)");
       }
     }
-    out.closeRing();
+    ringEnds.push_back(static_cast<std::uint32_t>(sequence.size()));
   }
+
+  std::vector<std::size_t> offsets(sequence.size() + 1);
+  offsets[0] = out.points.size();
+  for (std::size_t i = 0; i < sequence.size(); ++i) offsets[i + 1] = offsets[i] + counts[sequence[i]];
+  out.points.resize(offsets.back());
+  const Pieces fillPieces = piecesFor(sequence.size(), threads, 1 << 14);
+  runPieces(fillPieces, threads, [&](std::size_t p) {
+    for (std::size_t i = fillPieces.begin(p); i < fillPieces.end(p); ++i) {
+      const std::uint32_t n = sequence[i];
+      Point* at = out.points.data() + offsets[i];
+      *at++ = g.node(n).point;
+      if (counts[n] == 1) continue;
+      // The run after it: forward from the vertex after its edge's start, or backward from its
+      // edge's start, cyclically in its ring.
+      const bool forward = forwards[n] != 0;
+      const RingInfo& ring = g.ringOf(n);
+      const Point* v = g.operandOf(n).vertices.data();
+      const std::uint32_t edge = g.node(n).edge;
+      std::uint32_t vertex = !forward ? edge : edge + 1 == ring.endVertex ? ring.firstVertex : edge + 1;
+      for (std::uint32_t c = 1; c < counts[n]; ++c) {
+        *at++ = v[vertex];
+        if (forward) {
+          vertex = vertex + 1 == ring.endVertex ? ring.firstVertex : vertex + 1;
+        } else {
+          vertex = vertex == ring.firstVertex ? ring.endVertex - 1 : vertex - 1;
+        }
+      }
+    }
+  });
+  for (std::uint32_t end : ringEnds) out.start.push_back(static_cast<std::uint32_t>(offsets[end]));
+  giveBack<Spare::TraceSteps>(steps), giveBack<Spare::TraceCounts>(counts), giveBack<Spare::TraceFlags>(forwards);
+  giveBack<Spare::TraceSequence>(sequence);
 
   for (const RingInfo& ring : g.subjectRings) {
     if (ring.head == kNone && ring.startsInside == keepsSubjectPiecesInsideClip(op)) {
@@ -72,12 +143,12 @@ void traceOneOp(VertexGraph& g, Op op, FlatRings& out) {
 
 }  // namespace
 
-void traceResult(VertexGraph& g, Op op, FlatRings& out) {
+void traceResult(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
   if (op == Op::Xor) {
-    traceOneOp(g, Op::Difference, out);
-    traceOneOp(g, Op::ReverseDifference, out);
+    traceOneOp(g, Op::Difference, out, threads);
+    traceOneOp(g, Op::ReverseDifference, out, threads);
   } else {
-    traceOneOp(g, op, out);
+    traceOneOp(g, op, out, threads);
   }
 }
 

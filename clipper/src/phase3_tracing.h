@@ -15,7 +15,7 @@ namespace gh::detail {
 // Appends the answer's rings to `out`. Throws ClipFailure if a trace does not close within a
 // bound of twice the node count, or reaches an intersection vertex a previous trace used
 // (inconsistent entry/exit marks).
-void traceResult(VertexGraph& graph, Op op, FlatRings& out);
+void traceResult(VertexGraph& graph, Op op, FlatRings& out, unsigned threads = 1);
 
 // The same as a Region (for tests).
 Region traceResult(VertexGraph& graph, Op op);

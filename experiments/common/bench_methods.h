@@ -42,13 +42,14 @@ inline const std::vector<work::Workload>& seededPool(const std::string& workload
 // checked (exact oracle for small inputs, sampling oracle otherwise).
 inline void runMethodOnPool(benchmark::State& state, const std::string& method, const std::vector<work::Workload>& pool,
                             Op op) {
-  if (method == "crossings") {
-    // The floor (clipper/src/crossing_floor.h): every pair tested, every crossing constructed.
+  if (method == "crossings" || method == "crossings-simd") {
+    // The floor (clipper/src/crossing_floor.h): every pair tested, every crossing constructed;
+    // -simd: through the vectorized pair test.
     std::vector<detail::Crossing> crossings;
     std::size_t i = 0, found = 0;
     for (auto _ : state) {
       const auto& w = pool[i++ % pool.size()];
-      found += detail::crossingFloor(w.subject, w.clip, crossings);
+      found += detail::crossingFloor(w.subject, w.clip, crossings, method == "crossings-simd");
       benchmark::DoNotOptimize(crossings.data());
     }
     state.counters["intersections"] = static_cast<double>(found) / static_cast<double>(std::max<std::size_t>(i, 1));

@@ -36,14 +36,14 @@ TEST(PaperPerturbation, ResolvesASharedEdge) {
                                                     AllPairsSearch{}, PaperArithmetic(counters), stats);
   EXPECT_GT(stats.perturbationRounds, 0u);
   EXPECT_GT(stats.perturbations, 0u);
-  EXPECT_EQ(r.clipOrder.size(), r.crossings.size());  // ordered: the degeneracies are gone
+  EXPECT_EQ(r.clipNodes.size(), r.subjectNodes.size());  // ordered: the degeneracies are gone
   // Phase 1 alone reports them and leaves the crossings unordered.
   Degeneracies d;
   Stats once;
   const Phase1Result raw = findIntersections(Operand({rect(0, 0, 4, 4)}), Operand({rect(4, 1, 8, 3)}),
                                              AllPairsSearch{}, PaperArithmetic(counters), once, &d);
   EXPECT_FALSE(d.empty());
-  EXPECT_TRUE(raw.clipOrder.empty());
+  EXPECT_TRUE(raw.clipNodes.empty());
 }
 
 // Near 1e-300 every product underflows: window-edge coordinates are 0 however far the

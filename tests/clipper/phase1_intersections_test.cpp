@@ -72,11 +72,12 @@ RC_GTEST_PROP(SortAlongEdge, SortsByAlphaThenTheOtherEdge, ()) {
 }
 
 bool samePhase1(const Phase1Result& a, const Phase1Result& b) {
-  if (a.crossings.size() != b.crossings.size() || a.clipOrder != b.clipOrder) return false;
-  for (std::size_t i = 0; i < a.crossings.size(); ++i) {
-    const Crossing& x = a.crossings[i];
-    const Crossing& y = b.crossings[i];
-    if (x.subjectEdge != y.subjectEdge || x.clipEdge != y.clipEdge || !(x.point == y.point)) return false;
+  if (a.crossingCount() != b.crossingCount()) return false;
+  for (std::size_t i = 0; i < a.crossingCount(); ++i) {
+    if (a.subjectEdge(i) != b.subjectEdge(i) || a.clipEdge(i) != b.clipEdge(i) || !(a.point(i) == b.point(i)) ||
+        a.clipOrder(i) != b.clipOrder(i)) {
+      return false;
+    }
   }
   return true;
 }

@@ -14,7 +14,7 @@ namespace {
 Ring rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
 template <class Arithmetic>
-VertexGraph marked(const Phase1Result& r, const Arithmetic& a) {
+VertexGraph marked(Phase1Result& r, const Arithmetic& a) {
   VertexGraph g = buildVertexGraph(r);
   locateRingStarts(g, a);
   markEntryExit(g);
@@ -27,7 +27,7 @@ TEST(Phase2, LocatesRingStartsAndAlternatesEntryAndExit) {
   Stats stats;
   // The square [0,4]^2 (first vertex (0,0), outside the gate), the gate (first vertex (0.5, 2),
   // inside the square), and a ring far away that crosses nothing.
-  const Phase1Result r = findIntersections(
+  Phase1Result r = findIntersections(
       Operand({rect(0, 0, 4, 4)}),
       Operand({{{0.5, 2}, {1.5, 2}, {1.5, 5}, {2.5, 5}, {2.5, 2}, {3.5, 2}, {3.5, 6}, {0.5, 6}}, rect(10, 10, 11, 11)}),
       AllPairsSearch{}, paper, stats);
@@ -45,7 +45,7 @@ TEST(Phase2, LocatesRingStartsAndAlternatesEntryAndExit) {
     std::uint32_t n = ring->head;
     int count = 0;
     do {
-      EXPECT_EQ(g.entry[n] != 0, expected);
+      EXPECT_EQ(g.node(n).entry != 0, expected);
       expected = !expected;
       n = g.next(n);
       ++count;
@@ -60,7 +60,7 @@ TEST(Phase2, DecidesStartsOnTheOtherBoundaryBySimulationOfSimplicity) {
   ExactCounters counters;
   const ExactArithmetic exact(counters);
   Stats stats;
-  const Phase1Result r =
+  Phase1Result r =
       findIntersections(Operand({rect(0, 0, 2, 2)}), Operand({rect(0, 0, 2, 2)}), AllPairsSearch{}, exact, stats);
   const VertexGraph g = marked(r, exact);
   EXPECT_FALSE(g.subjectRings[0].startsInside);

@@ -34,7 +34,7 @@ struct Gate {
 
 TEST(Tracing, EachOperationTracesItsPieces) {
   Gate g;
-  ASSERT_EQ(g.crossings.crossings.size(), 4u);
+  ASSERT_EQ(g.crossings.crossingCount(), 4u);
   // Intersection: the two leg ends inside the square, 1 x 2 each.
   const Region both = traceResult(g.graph, Op::Intersection);
   EXPECT_EQ(both.size(), 2u);
@@ -54,7 +54,7 @@ TEST(Tracing, BrokenListsRaiseClipFailureInsteadOfLooping) {
   VertexGraph& g = gate.graph;
   EXPECT_NO_THROW(traceResult(g, Op::Intersection));
   // Point every clip node's neighbour at one subject node: traces can no longer close.
-  for (std::uint32_t& s : g.clipToSubject) s = 1;
+  for (Node& n : *g.clipNodes) n.neighbor = 1;
   EXPECT_THROW(traceResult(g, Op::Intersection), ClipFailure);
 }
 
@@ -62,17 +62,17 @@ TEST(Tracing, BrokenListsRaiseClipFailureInsteadOfLooping) {
 // trace arrive at an intersection vertex an earlier trace used: reported, not followed.
 TEST(Tracing, ReusedIntersectionVertexRaisesClipFailure) {
   Gate gate;
-  const VertexGraph& g = gate.graph;
+  VertexGraph& g = gate.graph;
   int failures = 0;
   for (std::uint32_t n = 0; n < g.nodeCount(); ++n) {
-    VertexGraph corrupt = g;
-    corrupt.entry[n] ^= 1;
+    g.node(n).entry ^= 1;
     try {
-      traceResult(corrupt, Op::Intersection);
+      traceResult(g, Op::Intersection);
     } catch (const ClipFailure& e) {
       ++failures;
       EXPECT_NE(std::string(e.what()).find("tracing"), std::string::npos);
     }
+    g.node(n).entry ^= 1;
   }
   EXPECT_GT(failures, 0);
 }

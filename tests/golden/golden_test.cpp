@@ -47,14 +47,15 @@ std::string crossingsLine(Variant v, const work::Workload& w) {
     Stats stats;
     const Phase1Result r = phase1(v, w.subject, w.clip, stats);
     Fingerprint f;
-    for (const Crossing& x : r.crossings) {
-      f.add(std::uint64_t{x.subjectEdge}), f.add(std::uint64_t{x.clipEdge}), f.add(x.point);
+    for (std::size_t i = 0; i < r.crossingCount(); ++i) {
+      f.add(std::uint64_t{r.subjectEdge(i)}), f.add(std::uint64_t{r.clipEdge(i)}), f.add(r.point(i));
     }
-    for (std::uint32_t id : r.clipOrder) {
-      f.add(std::uint64_t{r.crossings[id].clipEdge}), f.add(std::uint64_t{r.crossings[id].subjectEdge});
+    for (std::size_t j = 0; j < r.crossingCount(); ++j) {
+      const std::uint32_t id = r.clipOrder(j);
+      f.add(std::uint64_t{r.clipEdge(id)}), f.add(std::uint64_t{r.subjectEdge(id)});
     }
     std::ostringstream s;
-    s << r.crossings.size() << " " << std::hex << f.value() << std::dec << " perturbations=" << stats.perturbations;
+    s << r.crossingCount() << " " << std::hex << f.value() << std::dec << " perturbations=" << stats.perturbations;
     return s.str();
   } catch (const ClipFailure&) {
     return "failed";

@@ -78,14 +78,29 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
 }
 
 void ExactArithmetic::testRow(const Operand& subject, std::uint32_t se, const Operand& clip,
-                              CrossingBuffer<Extra>& into) const {
+                              const EdgeArrays* clipArrays, CrossingBuffer<Extra>& into) const {
   const auto m = static_cast<std::uint32_t>(clip.size());
   into.pairs += m;
-  Crossing c;
-  Extra e;
-  for (std::uint32_t ce = 0; ce < m; ++ce) {
-    if (test(subject, se, clip, ce, c, e).kind == PairTest::Kind::Crossing) into.add(c, e);
+  struct Context {
+    const ExactArithmetic& arithmetic;
+    const Operand &subject, &clip;
+    std::uint32_t se;
+    CrossingBuffer<Extra>& into;
+  } context{*this, subject, clip, se, into};
+  auto test = [](void* c, std::uint32_t ce) {
+    Context& k = *static_cast<Context*>(c);
+    Crossing crossing;
+    Extra extra;
+    if (k.arithmetic.test(k.subject, k.se, k.clip, ce, crossing, extra).kind == PairTest::Kind::Crossing) {
+      k.into.add(crossing, extra);
+    }
+  };
+  if (clipArrays) {
+    const Point p1 = subject.from(se), p2 = subject.to(se);
+    exactRowCandidates(p1.x, p1.y, p2.x, p2.y, *clipArrays, test, &context);
+    return;
   }
+  for (std::uint32_t ce = 0; ce < m; ++ce) test(&context, ce);
 }
 
 int ExactArithmetic::exactlyAlongSubject(const Crossing& a, const Extra&, const Crossing& b, const Extra&,

@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "arithmetic/pair_test.h"
+#include "arithmetic/row_kernels.h"
 #include "operand.h"
 #include "phase1_buffers.h"
 #include "phase1_result.h"
@@ -45,8 +46,10 @@ class ExactArithmetic {
     Extra e;
     if (test(subject, se, clip, ce, c, e).kind == PairTest::Kind::Crossing) into.add(c, e);
   }
-  // Subject edge se against every clip edge.
-  void testRow(const Operand& subject, std::uint32_t se, const Operand& clip, CrossingBuffer<Extra>& into) const;
+  // Subject edge se against every clip edge; the vectorized filter rejects most pairs first when
+  // `clipArrays` is given (row_kernels.h), with the same answers.
+  void testRow(const Operand& subject, std::uint32_t se, const Operand& clip, const EdgeArrays* clipArrays,
+               CrossingBuffer<Extra>& into) const;
 
   // Exact order of two crossings on one edge: -1 (a first), +1, or 0 (one point in the limit,
   // only when the two other edges lie on one line). Most pairs are decided by their certified

@@ -23,12 +23,37 @@ PairTest paper::collinearContacts(Point p1, Point p2, Point q1, Point q2) {
 }
 
 void PaperArithmetic::testRow(const Operand& subject, std::uint32_t se, const Operand& clip,
-                              CrossingBuffer<Extra>& into) const {
+                              const EdgeArrays* clipArrays, CrossingBuffer<Extra>& into) const {
   const Point p1 = subject.from(se), p2 = subject.to(se);
   const auto m = static_cast<std::uint32_t>(clip.size());
   const Point* v = clip.vertices.data();
   const std::uint32_t* next = clip.next.data();
   into.pairs += m;
+  if (clipArrays) {
+    struct Context {
+      const Operand &subject, &clip;
+      std::uint32_t se;
+      Point p1, p2;
+      CrossingBuffer<Extra>& into;
+    } context{subject, clip, se, p1, p2, into};
+    paperRow(
+        p1.x, p1.y, p2.x, p2.y, *clipArrays,
+        [](void* c, std::uint32_t ce, double alphaS, double alphaC, double x, double y) {
+          static_cast<Context*>(c)->into.crossings.push_back({static_cast<Context*>(c)->se, ce, {x, y}, alphaS, alphaC});
+        },
+        [](void* c, std::uint32_t ce) {
+          Context& k = *static_cast<Context*>(c);
+          Crossing crossing;
+          const PairTest t = paper::intersect(k.p1, k.p2, k.se, k.clip.from(ce), k.clip.to(ce), ce, crossing);
+          if (t.kind == PairTest::Kind::Crossing) {
+            k.into.crossings.push_back(crossing);
+          } else if (t.kind == PairTest::Kind::Degenerate) {
+            k.into.addDegenerate(t, k.se, ce, k.subject, k.clip);
+          }
+        },
+        &context);
+    return;
+  }
   Crossing c;
   for (std::uint32_t ce = 0; ce < m; ++ce) {
     const PairTest t = paper::intersect(p1, p2, se, v[ce], v[next[ce]], ce, c);

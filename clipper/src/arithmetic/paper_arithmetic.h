@@ -16,6 +16,7 @@
 #include <cstdint>
 
 #include "arithmetic/pair_test.h"
+#include "arithmetic/row_kernels.h"
 #include "operand.h"
 #include "phase1_buffers.h"
 #include "phase1_result.h"
@@ -108,8 +109,10 @@ class PaperArithmetic {
       into.addDegenerate(t, se, ce, subject, clip);
     }
   }
-  // Subject edge se against every clip edge.
-  void testRow(const Operand& subject, std::uint32_t se, const Operand& clip, CrossingBuffer<Extra>& into) const;
+  // Subject edge se against every clip edge; vectorized when `clipArrays` is given (the clip's
+  // edges as arrays, row_kernels.h), with the same answers.
+  void testRow(const Operand& subject, std::uint32_t se, const Operand& clip, const EdgeArrays* clipArrays,
+               CrossingBuffer<Extra>& into) const;
 
   // Order of two crossings on the same subject (clip) edge: by alpha, as in the paper.
   // -1: a first, +1: b first, 0: tied.

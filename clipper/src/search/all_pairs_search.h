@@ -14,6 +14,7 @@ struct AllPairsSearch {
   struct Plan {
     std::size_t units;
     std::size_t pairsPerUnit;  // for splitting the work: a row tests every clip edge
+    static constexpr bool rows = true;  // units are visited as rows (onRow)
     // onRow(subjectEdge) for every unit in [begin, end); onPair is for searches that find pairs
     // one at a time.
     template <class OnRow, class OnPair>

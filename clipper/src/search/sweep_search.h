@@ -140,6 +140,7 @@ struct SweepSearch {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> chainPairs;
     std::size_t units = 0;
     std::size_t pairsPerUnit = 16;  // for splitting the work: a rough mean per chain pair
+    static constexpr bool rows = false;  // units are visited pair by pair (onPair)
     template <class OnRow, class OnPair>
     void visit(std::size_t begin, std::size_t end, OnRow&&, OnPair&& onPair) const {
       for (std::size_t u = begin; u < end; ++u) {
