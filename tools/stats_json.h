@@ -15,6 +15,7 @@ inline nlohmann::json statsJson(const Stats& s) {
           {"perturbations", s.perturbations},
           {"perturbation_rounds", s.perturbationRounds},
           {"filter_failures", s.filterFailures},
+          {"expansion_decisions", s.expansionDecisions},
           {"exact_constructions", s.exactConstructions},
           {"output_rings", s.outputRings},
           {"output_vertices", s.outputVertices},

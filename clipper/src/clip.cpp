@@ -74,6 +74,7 @@ Region clipWith(Operand s, Operand c, Op op, const Options& options, Stats& stat
   giveBack<Spare::ClipNodes>(crossings.clipNodes);
   giveBack<Spare::TracedPoints>(traced.points);
   stats.filterFailures = counters.filterFailures;
+  stats.expansionDecisions = counters.expansionDecisions;
   stats.exactConstructions = counters.exactConstructions;
   return result;
 }

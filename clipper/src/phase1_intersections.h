@@ -8,8 +8,9 @@
 //              the paper's doubles, or exact predicates under Simulation of Simplicity):
 //                PairTest test(subject, se, clip, ce, Crossing& out, Extra& extra)
 //                void testRow(subject, se, clip, CrossingBuffer<Extra>&)   (all clip edges)
-//                int compareAlongSubject(SortItem a, SortItem b, crossings, extras, subject, clip),
-//                    compareAlongClip, double errorAlongSubject(Extra), errorAlongClip
+//                int compareAlongSubject(SortItem a, SortItem b, edge, subject, clip),
+//                    compareAlongClip, double errorAlongSubject(Extra), errorAlongClip,
+//                    bool atInputVertex(Extra)
 //              where Extra is whatever the policy's ordering needs beside the Crossing (nothing for
 //              the paper's), kept only during phase 1.
 // A policy that can meet degenerate contacts (Arithmetic::kReportsDegeneracies, the paper's only)
@@ -27,6 +28,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cmath>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -46,12 +48,17 @@ struct Degeneracies {
   bool empty() const { return subject.empty() && clip.empty(); }
 };
 
-// One crossing as the sort along an edge sees it: its position there (with a certified error
-// bound, 0 when the arithmetic has none), the other edge (the tie-breaker) and its index.
+// One crossing as the sort along an edge sees it, with what the node it becomes needs: its
+// position there (with a certified error bound, 0 when the arithmetic has none), its point, the
+// other edge (the tie-breaker) and where it comes from.
 struct SortItem {
   double alpha, err;
-  std::uint32_t other, index;
+  Point point;
+  std::uint32_t other;
+  std::uint32_t index : 31;
+  std::uint32_t atInputVertex : 1;  // the point is exactly an input vertex (the exact arithmetic's limit)
 };
+static_assert(sizeof(SortItem) == 40, "a sort item is 40 bytes");
 
 // Sorts the crossings of one edge, [first, last), along it, in the order of a total order:
 // alpha first (ties: the other edge), which is the whole order for an arithmetic whose order is
@@ -135,7 +142,7 @@ void sortAlongEdge(SortItem* first, SortItem* last, std::vector<SortItem>& scrat
 }
 
 // Sorts every bucket of `items` (given by offsets) along its edge, in pieces over `threads`.
-// compare(a, b, piece) is the arithmetic's order.
+// compare(a, b, edge, piece) is the arithmetic's order along `edge` (the bucket).
 template <bool kAlphaOrderIsExact, class Compare>
 void sortBuckets(std::vector<SortItem>& items, const std::vector<std::uint32_t>& offsets, unsigned threads,
                  Compare&& compare) {
@@ -146,7 +153,9 @@ void sortBuckets(std::vector<SortItem>& items, const std::vector<std::uint32_t>&
     std::vector<std::uint32_t> slots;
     for (std::size_t b = pieces.begin(p); b < pieces.end(p); ++b) {
       sortAlongEdge<kAlphaOrderIsExact>(items.data() + offsets[b], items.data() + offsets[b + 1], scratch, slots,
-                                        [&](const SortItem& x, const SortItem& y) { return compare(x, y, p); });
+                                        [&](const SortItem& x, const SortItem& y) {
+                                          return compare(x, y, static_cast<std::uint32_t>(b), p);
+                                        });
     }
   });
 }
@@ -176,31 +185,32 @@ void orderAlongEdges(Phase1Result& r, const std::vector<Crossing>& found, const 
   std::vector<ExactCounters> counters(4 * std::size_t{std::max(threads, 1u)} + 1);
   std::vector<Arithmetic> local;
   for (ExactCounters& c : counters) local.emplace_back(c);
-  thread_local std::vector<std::uint32_t> offsets, at;
+  if (k >= (std::size_t{1} << 31)) throw std::length_error("ghclip: more than 2^31 crossings");
+  thread_local std::vector<std::uint32_t> offsets, at, position;
   thread_local std::vector<SortItem> items;
   items.resize(k);
 
-  // Along the subject: crossings scattered into their edge's bucket (in the search's order), each
-  // bucket sorted, and the crossings written in that order.
+  // Along the subject: crossings scattered into their edge's bucket (in the search's order: the
+  // rows of all pairs come bucketed already), each bucket sorted, the nodes written in that order.
   bucketOffsets(k, r.subject.size(), [&](std::size_t i) { return found[i].subjectEdge; }, offsets);
   at.assign(offsets.begin(), offsets.end() - 1);
   for (std::size_t i = 0; i < k; ++i) {
     const Crossing& c = found[i];
-    items[at[c.subjectEdge]++] = {c.alphaSubject, arithmetic.errorAlongSubject(extraOf(foundExtras, i)), c.clipEdge,
-                                  static_cast<std::uint32_t>(i)};
+    const Extra& e = extraOf(foundExtras, i);
+    items[at[c.subjectEdge]++] = {c.alphaSubject, arithmetic.errorAlongSubject(e), c.point, c.clipEdge,
+                                  static_cast<std::uint32_t>(i), arithmetic.atInputVertex(e)};
   }
-  sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::size_t p) {
-    return local[p].compareAlongSubject(a, b, found.data(), foundExtras.data(), r.subject, r.clip);
+  sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::uint32_t edge, std::size_t p) {
+    return local[p].compareAlongSubject(a, b, edge, r.subject, r.clip);
   });
-  // The crossings in subject order, as nodes; where each found crossing stands in that order.
   borrow<Spare::SubjectNodes>(r.subjectNodes);
   r.subjectNodes.reserve(k);
-  thread_local std::vector<std::uint32_t> position;
-  position.resize(k);
-  for (std::size_t i = 0; i < k; ++i) {
-    const Crossing& c = found[items[i].index];
-    r.subjectNodes.push_back({c.point, c.subjectEdge, 0, 0, 0});
-    position[items[i].index] = static_cast<std::uint32_t>(i);
+  position.resize(k);  // where each found crossing stands along the subject
+  for (std::uint32_t edge = 0; edge < r.subject.size(); ++edge) {
+    for (std::uint32_t i = offsets[edge]; i < offsets[edge + 1]; ++i) {
+      r.subjectNodes.push_back({items[i].point, edge, 0, 0, 0});
+      position[items[i].index] = i;
+    }
   }
 
   // Along the clip: the same, each node linked to its copy in the subject's list.
@@ -208,24 +218,23 @@ void orderAlongEdges(Phase1Result& r, const std::vector<Crossing>& found, const 
   at.assign(offsets.begin(), offsets.end() - 1);
   for (std::size_t i = 0; i < k; ++i) {
     const Crossing& c = found[i];
-    items[at[c.clipEdge]++] = {c.alphaClip, arithmetic.errorAlongClip(extraOf(foundExtras, i)), c.subjectEdge,
-                               static_cast<std::uint32_t>(i)};
+    const Extra& e = extraOf(foundExtras, i);
+    items[at[c.clipEdge]++] = {c.alphaClip, arithmetic.errorAlongClip(e), c.point, c.subjectEdge, position[i],
+                               arithmetic.atInputVertex(e)};
   }
-  sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::size_t p) {
-    return local[p].compareAlongClip(a, b, found.data(), foundExtras.data(), r.subject, r.clip);
+  sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::uint32_t edge, std::size_t p) {
+    return local[p].compareAlongClip(a, b, edge, r.subject, r.clip);
   });
   borrow<Spare::ClipNodes>(r.clipNodes);
   r.clipNodes.reserve(k);
-  for (std::uint32_t j = 0; j < k; ++j) {
-    const Crossing& c = found[items[j].index];
-    const std::uint32_t i = position[items[j].index];
-    r.clipNodes.push_back({c.point, c.clipEdge, i, 0, 0});
-    r.subjectNodes[i].neighbor = j;  // independent writes: their cache misses overlap
+  for (std::uint32_t edge = 0; edge < r.clip.size(); ++edge) {
+    for (std::uint32_t j = offsets[edge]; j < offsets[edge + 1]; ++j) {
+      const std::uint32_t i = items[j].index;
+      r.clipNodes.push_back({items[j].point, edge, i, 0, 0});
+      r.subjectNodes[i].neighbor = j;  // independent writes: their cache misses overlap
+    }
   }
-  for (const ExactCounters& c : counters) {
-    arithmetic.counters().filterFailures += c.filterFailures;
-    arithmetic.counters().exactConstructions += c.exactConstructions;
-  }
+  for (const ExactCounters& c : counters) arithmetic.counters() += c;
 }
 
 template <class Search, class Arithmetic>
@@ -255,8 +264,7 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
   for (std::size_t p = 0; p < pieces.pieces; ++p) {
     CrossingBuffer<Extra>& b = buffers[p];
     stats.candidatePairs += b.pairs;
-    arithmetic.counters().filterFailures += b.counters.filterFailures;
-    arithmetic.counters().exactConstructions += b.counters.exactConstructions;
+    arithmetic.counters() += b.counters;
     total += b.crossings.size();
     if constexpr (Arithmetic::kReportsDegeneracies) {
       found.subject.insert(found.subject.end(), b.degenerateSubject.begin(), b.degenerateSubject.end());

@@ -18,6 +18,12 @@
 namespace gh::detail {
 namespace {
 
+SortItem item(double alpha, double err, std::uint32_t other, std::uint32_t index) {
+  SortItem i{};
+  i.alpha = alpha, i.err = err, i.other = other, i.index = index;
+  return i;
+}
+
 // Items whose true positions are `truth` (ties allowed), given to the sort as approximations
 // alpha within err of the truth, or as NaN or infinity with an unbounded error. The comparison
 // is the truth's, as an arithmetic's exact comparison would be; ties go to the other edge.
@@ -33,7 +39,7 @@ RC_GTEST_PROP(SortAlongEdge, GivesTheTotalOrderFromAnyApproximation, ()) {
     if (kind == 2) err = 0.3, alpha += *rc::gen::inRange(-1000, 1001) * 3e-4;
     if (kind == 3) err = INFINITY, alpha = std::numeric_limits<double>::quiet_NaN();
     if (kind == 4) err = INFINITY, alpha = INFINITY;
-    items.push_back({alpha, err, static_cast<std::uint32_t>(1000 - i), static_cast<std::uint32_t>(i)});
+    items.push_back(item(alpha, err, static_cast<std::uint32_t>(1000 - i), static_cast<std::uint32_t>(i)));
   }
   auto compare = [&truth](const SortItem& a, const SortItem& b) {
     const double x = truth[a.index], y = truth[b.index];
@@ -56,8 +62,8 @@ RC_GTEST_PROP(SortAlongEdge, SortsByAlphaThenTheOtherEdge, ()) {
   std::vector<SortItem> items;
   for (int i = 0; i < s; ++i) {
     const double alpha = *rc::gen::element(0.0, -0.0, 1.0, 0.5, 1e-300) + *rc::gen::inRange(0, 50) / 64.0;
-    items.push_back({alpha, 0, static_cast<std::uint32_t>(*rc::gen::inRange(0, 1 << 20)) * 512u + static_cast<std::uint32_t>(i),
-                     static_cast<std::uint32_t>(i)});
+    items.push_back(item(alpha, 0, static_cast<std::uint32_t>(*rc::gen::inRange(0, 1 << 20)) * 512u + static_cast<std::uint32_t>(i),
+                         static_cast<std::uint32_t>(i)));
   }
   std::vector<SortItem> expected = items;
   std::sort(expected.begin(), expected.end(), [](const SortItem& a, const SortItem& b) {

@@ -92,7 +92,7 @@ TEST(Orientation, AgreesWithRationalsOnNearCollinearFixtures) {
     const Point a{0.5 + k(rng) * h, 0.5 + k(rng) * h}, b{12 + k(rng) * h, 12 + k(rng) * h}, c{24 + k(rng) * h, 24 + k(rng) * h};
     EXPECT_EQ(static_cast<int>(orientation(a, b, c, counters)), rationalOrientation(a, b, c)) << i;
   }
-  EXPECT_GT(counters.filterFailures, 0u);  // the fixture does reach the exact stage
+  EXPECT_GT(counters.expansionDecisions, 0u);  // the fixture does reach the exact stages
 }
 
 // Found by the OGC conversion test at 2^-540: between 2^-900 and ~2^-537 the differences of
@@ -120,6 +120,46 @@ RC_GTEST_PROP(Orientation, AgreesWithRationalsAtEveryScale, ()) {
   ExactCounters counters;
   RC_ASSERT(static_cast<int>(orientation(a, b, c, counters)) == rationalOrientation(a, b, c));
   RC_ASSERT(static_cast<int>(crossSign(a, b, a, c, counters)) == rationalOrientation(a, b, c));
+}
+
+// The exact sum in doubles between the filter and GMP: nearly parallel directions (a direction
+// and its rounded opposite, as the pie workload's edges through the origin are) are decided
+// without rationals, and right.
+RC_GTEST_PROP(CrossSign, DecidesNearlyParallelDirectionsInDoubles, ()) {
+  const double angle = *rc::gen::inRange(0, 1 << 20) * (6.283185307179586 / (1 << 20));
+  const int e = *rc::gen::inRange(-400, 400);
+  const Point o{std::ldexp(*rc::gen::inRange(-8, 9), e), std::ldexp(*rc::gen::inRange(-8, 9), e)};
+  const Point m{o.x + std::ldexp(std::cos(angle), e), o.y + std::ldexp(std::sin(angle), e)};
+  const Point n{o.x + std::ldexp(std::cos(angle + 3.141592653589793), e), o.y + std::ldexp(std::sin(angle + 3.141592653589793), e)};
+  ExactCounters counters;
+  const Sign s = crossSign(o, m, o, n, counters);
+  const mpq_class exact = (mpq_class(m.x) - o.x) * (mpq_class(n.y) - o.y) - (mpq_class(m.y) - o.y) * (mpq_class(n.x) - o.x);
+  RC_ASSERT(static_cast<int>(s) == sgn(exact));
+  RC_ASSERT(counters.filterFailures == 0u);
+}
+
+// The order of crossings that tend to one point (many edges through one vertex) from the eps terms
+// alone, factored (sos_predicates.cpp), against the expansion evaluated term by term in rationals.
+RC_GTEST_PROP(SoS, OrderAtASharedLimitAgreesWithRationals, ()) {
+  auto coord = [] { return static_cast<double>(*rc::gen::inRange(-6, 7)); };
+  const Point v{coord(), coord()};
+  Point a{coord(), coord()}, m{coord(), coord()}, n{coord(), coord()};
+  RC_PRE(!(a == v) && !(m == v) && !(n == v));
+  const bool reverse = *rc::gen::arbitrary<bool>();
+  const Point a1 = reverse ? a : v, a2 = reverse ? v : a;  // the edge along which we order
+  // (t_M - t_N) D_M D_N = F0 + F1 eps - F2 eps^2 along a subject edge (bSign +1, cSign -1).
+  const mpq_class mx = mpq_class(m.x) - v.x, my = mpq_class(m.y) - v.y, nx = mpq_class(n.x) - v.x, ny = mpq_class(n.y) - v.y;
+  const mpq_class ax = mpq_class(a1.x) - a2.x, ay = mpq_class(a1.y) - a2.y;
+  const mpq_class dM = mx * ay - my * ax, dN = nx * ay - ny * ax;
+  RC_PRE(sgn(dM) != 0 && sgn(dN) != 0);
+  const mpq_class aM = mx * (mpq_class(a1.y) - v.y) - my * (mpq_class(a1.x) - v.x);
+  const mpq_class aN = nx * (mpq_class(a1.y) - v.y) - ny * (mpq_class(a1.x) - v.x);
+  const int f0 = sgn(aM * dN - aN * dM), f1 = sgn(my * dN - ny * dM), f2 = -sgn(mx * dN - nx * dM);
+  RC_ASSERT(f0 == 0);  // both crossings are at v
+  const int expected = (f1 != 0 ? f1 : f2) * sgn(dM) * sgn(dN);
+  ExactCounters counters;
+  RC_ASSERT(sos::compareAlongSubject(a1, a2, v, m, v, n, counters, true) == expected);
+  RC_ASSERT(sos::compareAlongSubject(a1, a2, v, m, v, n, counters, false) == expected);
 }
 
 TEST(SoS, SidesAreNeverZero) {

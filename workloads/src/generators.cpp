@@ -130,6 +130,48 @@ Ring gridStar(std::size_t n, Point c, double rMin, double rMax, Rng& rng) {
   return snapped;
 }
 
+// K triangles sharing the origin, the pieces of a pie: (0,0), then two consecutive points of a
+// regular K-gon of radius r, turned by `turn`. Every piece has two edges through the origin.
+Region pie(std::size_t k, double r, double turn) {
+  Region out;
+  for (std::size_t i = 0; i < k; ++i) {
+    const double a = turn + 2 * kPi * static_cast<double>(i) / static_cast<double>(k);
+    const double b = turn + 2 * kPi * static_cast<double>(i + 1) / static_cast<double>(k);
+    out.push_back({{0, 0}, {r * std::cos(a), r * std::sin(a)}, {r * std::cos(b), r * std::sin(b)}});
+  }
+  return out;
+}
+
+// K petals sharing the origin: kites (0,0), a shoulder at radius r, the tip at radius R, the other
+// shoulder, each petal 0.8 of its sector wide, turned by `turn`.
+Region flower(std::size_t k, double r, double tipRadius, double turn) {
+  Region out;
+  const double half = 0.4 * 2 * kPi / static_cast<double>(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    const double a = turn + 2 * kPi * static_cast<double>(i) / static_cast<double>(k);
+    out.push_back({{0, 0},
+                   {r * std::cos(a - half), r * std::sin(a - half)},
+                   {tipRadius * std::cos(a), tipRadius * std::sin(a)},
+                   {r * std::cos(a + half), r * std::sin(a + half)}});
+  }
+  return out;
+}
+
+// About n vertices of islands in a g x g layout of unit cells: each island (a star ring) holds a
+// lake, and the lake an islet, so rings nest three deep: islands inside lakes inside islands.
+Region archipelago(std::size_t n, Point offset, Rng& rng) {
+  const std::size_t groups = std::max<std::size_t>(1, n / 44);
+  const auto g = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(groups))));
+  Region out;
+  for (std::size_t k = 0; k < groups; ++k) {
+    const Point c{offset.x + static_cast<double>(k % g) + 0.5, offset.y + static_cast<double>(k / g) + 0.5};
+    out.push_back(starRing(24, c, 0.3, 0.48, rng));
+    out.push_back(starRing(12, c, 0.14, 0.24, rng));
+    out.push_back(starRing(8, c, 0.04, 0.1, rng));
+  }
+  return out;
+}
+
 Workload degenerateFamily(const std::string& name, std::size_t n, Rng& rng) {
   auto g = [&](int lo, int hi) { return static_cast<double>(uniformInt(rng, lo, hi)); };
   if (name == "identical") {
@@ -189,6 +231,15 @@ Workload base(const std::string& name, std::size_t n, Rng& rng, std::uint64_t se
     return {{coastlineRing(n, {0, 0}, 1, rng)}, {coastlineRing(n, {0.6, 0.2}, 1, rng)}};
   }
   if (name == "holes") return {holesRegion(n, {0, 0}, rng), holesRegion(n, {0.37, 0.21}, rng)};
+  if (name == "pie") {
+    const std::size_t k = std::max<std::size_t>(n, 3);
+    return {pie(k, 1, 0), pie(k, 1, kPi / static_cast<double>(k))};
+  }
+  if (name == "flower") {
+    const std::size_t k = std::max<std::size_t>(n, 3);
+    return {flower(k, 0.5, 1, 0), flower(k, 0.55, 0.95, 0.5 * kPi / static_cast<double>(k))};
+  }
+  if (name == "archipelago") return {archipelago(n, {0, 0}, rng), archipelago(n, {0.45, 0.3}, rng)};
   return degenerateFamily(name, n, rng);
 }
 
@@ -208,7 +259,7 @@ const std::vector<std::string>& workloadNames() {
       "random",        "simple",         "grid",        "identical",
       "shared-edge",   "touching-vertex", "nested-touching", "sliver",
       "sub-boundary",  "bitset-grid",    "circles",     "coastline",
-      "holes"};
+      "holes",         "pie",            "flower",      "archipelago"};
   return names;
 }
 

@@ -13,6 +13,7 @@ struct Stats {
   std::uint64_t perturbations = 0;    // vertices moved (paper arithmetic) to break degeneracies
   std::uint64_t perturbationRounds = 0;  // phase-1 restarts after perturbing
   std::uint64_t filterFailures = 0;   // exact predicates that needed rationals (any phase, clean-up too)
+  std::uint64_t expansionDecisions = 0;  // ...that the filter could not decide, decided exactly in doubles
   std::uint64_t exactConstructions = 0;  // crossing points the exact arithmetic rounded from rationals
   std::uint64_t outputRings = 0;
   std::uint64_t outputVertices = 0;

@@ -103,18 +103,16 @@ void ExactArithmetic::testRow(const Operand& subject, std::uint32_t se, const Op
   for (std::uint32_t ce = 0; ce < m; ++ce) test(&context, ce);
 }
 
-int ExactArithmetic::exactlyAlongSubject(const Crossing& a, const Extra&, const Crossing& b, const Extra&,
-                                         const Operand& subject, const Operand& clip) const {
-  const std::uint32_t e = a.subjectEdge;
-  return sos::compareAlongSubject(subject.from(e), subject.to(e), clip.from(a.clipEdge), clip.to(a.clipEdge),
-                                  clip.from(b.clipEdge), clip.to(b.clipEdge), *counters_);
+int ExactArithmetic::exactlyAlongSubject(std::uint32_t e, std::uint32_t a, std::uint32_t b, const Operand& subject,
+                                         const Operand& clip, bool sameLimit) const {
+  return sos::compareAlongSubject(subject.from(e), subject.to(e), clip.from(a), clip.to(a), clip.from(b), clip.to(b),
+                                  *counters_, sameLimit);
 }
 
-int ExactArithmetic::exactlyAlongClip(const Crossing& a, const Extra&, const Crossing& b, const Extra&,
-                                      const Operand& subject, const Operand& clip) const {
-  const std::uint32_t e = a.clipEdge;
-  return sos::compareAlongClip(clip.from(e), clip.to(e), subject.from(a.subjectEdge), subject.to(a.subjectEdge),
-                               subject.from(b.subjectEdge), subject.to(b.subjectEdge), *counters_);
+int ExactArithmetic::exactlyAlongClip(std::uint32_t e, std::uint32_t a, std::uint32_t b, const Operand& subject,
+                                      const Operand& clip, bool sameLimit) const {
+  return sos::compareAlongClip(clip.from(e), clip.to(e), subject.from(a), subject.to(a), subject.from(b), subject.to(b),
+                               *counters_, sameLimit);
 }
 
 bool ExactArithmetic::subjectVertexInsideClip(const Operand& subject, std::uint32_t v, const Operand& clip) const {

@@ -14,6 +14,7 @@
 #include "phase1_buffers.h"
 #include "phase1_result.h"
 #include "predicates/exact_counters.h"
+#include "predicates/sign.h"
 
 namespace gh::detail {
 
@@ -56,17 +57,27 @@ class ExactArithmetic {
   // position intervals (inline, for the sort); the rest by the exact predicate.
   double errorAlongSubject(const Extra& e) const { return e.errSubject; }
   double errorAlongClip(const Extra& e) const { return e.errClip; }
+  bool atInputVertex(const Extra& e) const { return e.atInputVertex; }
+  //
+  // Crossings whose limits are input vertices (many edges through one point) are ordered without
+  // the full predicate: two different vertices by their positions along the edge, which is
+  // exact; the same vertex by the eps terms alone (sos_predicates.h, sameLimit), which the
+  // floating-point filter decides, where the eps-free term would need rationals to show it is 0.
   template <class Item>
-  int compareAlongSubject(const Item& a, const Item& b, const Crossing* cs, const Extra* extras,
-                          const Operand& subject, const Operand& clip) const {
+  int compareAlongSubject(const Item& a, const Item& b, std::uint32_t edge, const Operand& subject,
+                          const Operand& clip) const {
     if (const int quick = byIntervals(a.alpha, a.err, b.alpha, b.err)) return quick;
-    return exactlyAlongSubject(cs[a.index], extras[a.index], cs[b.index], extras[b.index], subject, clip);
+    const bool bothAtVertices = a.atInputVertex && b.atInputVertex;
+    if (bothAtVertices && !(a.point == b.point)) return alongLine(subject.from(edge), subject.to(edge), a.point, b.point);
+    return exactlyAlongSubject(edge, a.other, b.other, subject, clip, bothAtVertices);
   }
   template <class Item>
-  int compareAlongClip(const Item& a, const Item& b, const Crossing* cs, const Extra* extras, const Operand& subject,
+  int compareAlongClip(const Item& a, const Item& b, std::uint32_t edge, const Operand& subject,
                        const Operand& clip) const {
     if (const int quick = byIntervals(a.alpha, a.err, b.alpha, b.err)) return quick;
-    return exactlyAlongClip(cs[a.index], extras[a.index], cs[b.index], extras[b.index], subject, clip);
+    const bool bothAtVertices = a.atInputVertex && b.atInputVertex;
+    if (bothAtVertices && !(a.point == b.point)) return alongLine(clip.from(edge), clip.to(edge), a.point, b.point);
+    return exactlyAlongClip(edge, a.other, b.other, subject, clip, bothAtVertices);
   }
 
   bool subjectVertexInsideClip(const Operand& subject, std::uint32_t v, const Operand& clip) const;
@@ -80,10 +91,19 @@ class ExactArithmetic {
     if (b + eb < a - ea) return 1;
     return 0;
   }
-  int exactlyAlongSubject(const Crossing& a, const Extra& ea, const Crossing& b, const Extra& eb,
-                          const Operand& subject, const Operand& clip) const;
-  int exactlyAlongClip(const Crossing& a, const Extra& ea, const Crossing& b, const Extra& eb,
-                       const Operand& subject, const Operand& clip) const;
+  // Along subject edge `edge`, the crossings with clip edges a and b (and the other way round);
+  // sameLimit: both tend to one point.
+  int exactlyAlongSubject(std::uint32_t edge, std::uint32_t a, std::uint32_t b, const Operand& subject,
+                          const Operand& clip, bool sameLimit) const;
+  int exactlyAlongClip(std::uint32_t edge, std::uint32_t a, std::uint32_t b, const Operand& subject,
+                       const Operand& clip, bool sameLimit) const;
+  // The order of two distinct points u, v that lie on the line from e1 to e2 (both the limits of
+  // crossings with the edge e1e2): -1 if u comes first going from e1 to e2. Exact: comparisons
+  // along an axis on which e1 and e2 differ.
+  static int alongLine(Point e1, Point e2, Point u, Point v) {
+    if (e1.x != e2.x) return signOfDifference(u.x, v.x) * signOfDifference(e2.x, e1.x);
+    return signOfDifference(u.y, v.y) * signOfDifference(e2.y, e1.y);
+  }
 
   ExactCounters* counters_;
 };

@@ -118,14 +118,13 @@ class PaperArithmetic {
   // -1: a first, +1: b first, 0: tied.
   double errorAlongSubject(const Extra&) const { return 0; }
   double errorAlongClip(const Extra&) const { return 0; }
+  bool atInputVertex(const Extra&) const { return false; }
   template <class Item>
-  int compareAlongSubject(const Item& a, const Item& b, const Crossing*, const Extra*, const Operand&,
-                          const Operand&) const {
+  int compareAlongSubject(const Item& a, const Item& b, std::uint32_t, const Operand&, const Operand&) const {
     return signOfDifference(a.alpha, b.alpha);
   }
   template <class Item>
-  int compareAlongClip(const Item& a, const Item& b, const Crossing*, const Extra*, const Operand&,
-                       const Operand&) const {
+  int compareAlongClip(const Item& a, const Item& b, std::uint32_t, const Operand&, const Operand&) const {
     return signOfDifference(a.alpha, b.alpha);
   }
 

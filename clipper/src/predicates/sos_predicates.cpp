@@ -13,67 +13,53 @@ namespace {
 //   A_M = cross(m2 - m1, a1 - m1), D_M = cross(m2 - m1, a1 - a2), (mx, my) = m2 - m1,
 // so (t_M - t_N) D_M D_N = F0 + bSign F1 eps + cSign F2 eps^2 with
 //   F0 = A_M D_N - A_N D_M,  F1 = my D_N - ny D_M,  F2 = mx D_N - nx D_M.
-template <class N>
-struct Terms {
-  N f0, f1, f2, dM, dN;
-};
-
-template <class N>
-Terms<N> terms(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2) {
-  // The explicit return type matters: with gmpxx, `auto` would return an expression template
-  // that refers to this lambda's parameters after they are gone.
-  auto cross = [](const N& ux, const N& uy, const N& vx, const N& vy) -> N { return ux * vy - uy * vx; };
-  const N mx = N(m2.x) - N(m1.x), my = N(m2.y) - N(m1.y);
-  const N nx = N(n2.x) - N(n1.x), ny = N(n2.y) - N(n1.y);
-  const N ax = N(a1.x) - N(a2.x), ay = N(a1.y) - N(a2.y);
-  const N aM = cross(mx, my, N(a1.x) - N(m1.x), N(a1.y) - N(m1.y));
-  const N aN = cross(nx, ny, N(a1.x) - N(n1.x), N(a1.y) - N(n1.y));
-  const N dM = cross(mx, my, ax, ay), dN = cross(nx, ny, ax, ay);
-  Terms<N> t;
-  t.f0 = aM * dN - aN * dM;
-  t.f1 = my * dN - ny * dM;
-  t.f2 = mx * dN - nx * dM;
-  t.dM = dM;
-  t.dN = dN;
-  return t;
-}
-
-// sign(t_M - t_N) with the expansion's sign conventions: bSign, cSign multiply the B and C terms.
+// Expanding D_M and D_N, the eps terms factor into signs that are each cheap to decide exactly:
+//   F1 = -(a1.y - a2.y) X,  F2 = -(a1.x - a2.x) X,  X = cross(m2 - m1, n2 - n1),
+// so only F0 (degree 4) is a polynomial the filter may fail on; with sameLimit it is known to be 0.
 int compare(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2, int bSign, int cSign,
-            ExactCounters& counters) {
-  return filteredPredicate(
-      [&](auto numbers) -> std::optional<int> {
-        using N = typename decltype(numbers)::Number;
-        const Terms<N> t = terms<N>(a1, a2, m1, m2, n1, n2);
-        const auto sm = numbers.sign(t.dM), sn = numbers.sign(t.dN);
-        if (!sm || !sn) return std::nullopt;
-        // t_M - t_N = (F0 + bSign F1 eps + cSign F2 eps^2) / (D_M D_N): its leading term.
-        const int denominator = static_cast<int>(*sm) * static_cast<int>(*sn);
-        const std::pair<const N*, int> expansion[] = {{&t.f0, 1}, {&t.f1, bSign}, {&t.f2, cSign}};
-        for (const auto& [term, factor] : expansion) {
-          const auto s = numbers.sign(*term);
-          if (!s) return std::nullopt;
-          if (*s != Sign::Zero) return static_cast<int>(*s) * factor * denominator;
-        }
-        return 0;
-      },
-      counters);
+            ExactCounters& counters, bool sameLimit) {
+  // D_M = cross(m2 - m1, a1 - a2), D_N likewise.
+  const int denominator =
+      static_cast<int>(crossSign(m1, m2, a2, a1, counters)) * static_cast<int>(crossSign(n1, n2, a2, a1, counters));
+  if (!sameLimit) {
+    const Sign f0 = filteredPredicate(
+        [&](auto numbers) {
+          using N = typename decltype(numbers)::Number;
+          auto cross = [](const N& ux, const N& uy, const N& vx, const N& vy) -> N { return ux * vy - uy * vx; };
+          const N mx = N(m2.x) - N(m1.x), my = N(m2.y) - N(m1.y);
+          const N nx = N(n2.x) - N(n1.x), ny = N(n2.y) - N(n1.y);
+          const N ax = N(a1.x) - N(a2.x), ay = N(a1.y) - N(a2.y);
+          const N aM = cross(mx, my, N(a1.x) - N(m1.x), N(a1.y) - N(m1.y));
+          const N aN = cross(nx, ny, N(a1.x) - N(n1.x), N(a1.y) - N(n1.y));
+          const N value = aM * cross(nx, ny, ax, ay) - aN * cross(mx, my, ax, ay);
+          return numbers.sign(value);
+        },
+        counters);
+    if (f0 != Sign::Zero) return static_cast<int>(f0) * denominator;
+  }
+  const int x = static_cast<int>(crossSign(m1, m2, n1, n2, counters));
+  if (x == 0) return 0;  // M and N parallel (on one line, as they share the limit): a tie in every term
+  const int ay = signOfDifference(a1.y, a2.y);
+  if (ay != 0) return bSign * -ay * x * denominator;
+  return cSign * -signOfDifference(a1.x, a2.x) * x * denominator;
 }
 
 }  // namespace
 
-int compareAlongSubject(Point p1, Point p2, Point q1, Point q2, Point r1, Point r2, ExactCounters& counters) {
+int compareAlongSubject(Point p1, Point p2, Point q1, Point q2, Point r1, Point r2, ExactCounters& counters,
+                        bool sameLimit) {
   // Parameter along p of the crossing with clip edge q: (O(q1,q2,p1) + dy_q eps - dx_q eps^2) / D_q
   // with D_q = O(q1,q2,p1) - O(q1,q2,p2) = cross(q2 - q1, p1 - p2): B = +dy, C = -dx.
-  return compare(p1, p2, q1, q2, r1, r2, +1, -1, counters);
+  return compare(p1, p2, q1, q2, r1, r2, +1, -1, counters, sameLimit);
 }
 
-int compareAlongClip(Point q1, Point q2, Point p1, Point p2, Point s1, Point s2, ExactCounters& counters) {
+int compareAlongClip(Point q1, Point q2, Point p1, Point p2, Point s1, Point s2, ExactCounters& counters,
+                     bool sameLimit) {
   // Parameter along q of the crossing with subject edge p: (O(p1,p2,q1) - dy_p eps + dx_p eps^2)
   // / D_p with D_p = cross(p2 - p1, q1 - q2). O(p1,p2,q1) = cross(p2 - p1, q1 - p1) is the same
   // cross product shape as along the subject edge, with the roles of the lines swapped: B = -dy,
   // C = +dx.
-  return compare(q1, q2, p1, p2, s1, s2, -1, +1, counters);
+  return compare(q1, q2, p1, p2, s1, s2, -1, +1, counters, sameLimit);
 }
 
 namespace {

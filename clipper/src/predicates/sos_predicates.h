@@ -34,11 +34,14 @@ inline Sign subjectEdgeSide(Sign o, Point p1, Point p2) {
 
 // Order along subject edge p1p2 of its crossings with clip edges q and r (both crossing it):
 // -1 (q first), +1 (r first) or 0 (the same point for every eps: only when q and r lie on one
-// line).
-int compareAlongSubject(Point p1, Point p2, Point q1, Point q2, Point r1, Point r2, ExactCounters& counters);
+// line). With sameLimit the caller knows that both crossings tend to one point as eps -> 0 (the
+// eps-free term is 0): only the eps terms, polynomials of lower degree, are decided.
+int compareAlongSubject(Point p1, Point p2, Point q1, Point q2, Point r1, Point r2, ExactCounters& counters,
+                        bool sameLimit = false);
 
 // Order along clip edge q1q2 of its crossings with subject edges p and s: -1, +1 or 0.
-int compareAlongClip(Point q1, Point q2, Point p1, Point p2, Point s1, Point s2, ExactCounters& counters);
+int compareAlongClip(Point q1, Point q2, Point p1, Point p2, Point s1, Point s2, ExactCounters& counters,
+                     bool sameLimit = false);
 
 // Even-odd point-in-region with the clip translated (the one ray test, even_odd_ray.h): a subject
 // point against the clip's edges, and a clip point against the subject's edges. Edges are given

@@ -13,6 +13,11 @@
 //   circles      two perturbed circles of n vertices crossing twice (realistic)
 //   coastline    two star-shaped fractal outlines of n vertices (realistic)
 //   holes        a shell with several hole rings, against another one
+//   pie          n triangles sharing the origin (a pie chart) against the pie turned by pi / n: many
+//                edges through one point
+//   flower       n kite-shaped petals sharing the origin against another flower, turned
+//   archipelago  islands holding lakes holding islets, about n vertices in n / 15 rings, against
+//                another archipelago shifted by less than a cell: many rings, few crossings
 // A suffix picks a near-degenerate variant of any workload:
 //   +ulp   every coordinate moved by one ulp up or down
 //   +tiny  scaled by 2^-997 (about 1e-300)      +huge  scaled by a power of two to about 1e150
