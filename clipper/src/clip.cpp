@@ -59,7 +59,7 @@ Region clipWith(Operand s, Operand c, Op op, const Options& options, Stats& stat
 
   t = Clock::now();
   VertexGraph graph = buildVertexGraph(crossings);
-  locateRingStarts(graph, arithmetic);
+  locateRingStarts(graph, arithmetic, threads);
   markEntryExit(graph);
   stats.phase2Seconds = secondsSince(t);
 

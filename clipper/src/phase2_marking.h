@@ -9,20 +9,44 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <vector>
 
+#include "parallel.h"
+#include "predicates/exact_counters.h"
+#include "search/edge_slabs.h"
 #include "vertex_graph.h"
 
 namespace gh::detail {
 
-// Sets RingInfo::startsInside of every ring of both operands.
+// Sets RingInfo::startsInside of every ring of both operands. Many rings against many edges are
+// located through slabs of the other operand's edges (search/edge_slabs.h), in pieces over
+// `threads`; a few rings by a pass over all edges.
 template <class Arithmetic>
-void locateRingStarts(VertexGraph& graph, const Arithmetic& arithmetic) {
-  for (RingInfo& ring : graph.subjectRings) {
-    ring.startsInside = arithmetic.subjectVertexInsideClip(*graph.subject, ring.firstVertex, *graph.clip);
-  }
-  for (RingInfo& ring : graph.clipRings) {
-    ring.startsInside = arithmetic.clipVertexInsideSubject(*graph.clip, ring.firstVertex, *graph.subject);
-  }
+void locateRingStarts(VertexGraph& graph, const Arithmetic& arithmetic, unsigned threads = 1) {
+  auto locate = [&](std::vector<RingInfo>& rings, const Operand& own, const Operand& other, bool ownIsSubject) {
+    const bool indexed = rings.size() > 8 && rings.size() * other.size() > (std::size_t{1} << 16);
+    const std::unique_ptr<EdgeSlabs> slabs = indexed ? std::make_unique<EdgeSlabs>(other) : nullptr;
+    const Pieces pieces = piecesFor(rings.size(), threads, 64);
+    std::vector<ExactCounters> counters(pieces.pieces);
+    runPieces(pieces, threads, [&](std::size_t p) {
+      const Arithmetic local(counters[p]);
+      for (std::size_t r = pieces.begin(p); r < pieces.end(p); ++r) {
+        const Point v = own.vertices[rings[r].firstVertex];
+        const std::uint32_t* edges = nullptr;
+        std::size_t count = other.size();
+        if (slabs) {
+          const auto [first, last] = slabs->near(v.y);
+          edges = first, count = static_cast<std::size_t>(last - first);
+        }
+        rings[r].startsInside = ownIsSubject ? local.subjectPointInsideClip(v, other, edges, count)
+                                             : local.clipPointInsideSubject(v, other, edges, count);
+      }
+    });
+    for (const ExactCounters& c : counters) arithmetic.counters() += c;
+  };
+  locate(graph.subjectRings, *graph.subject, *graph.clip, true);
+  locate(graph.clipRings, *graph.clip, *graph.subject, false);
 }
 
 // Marks every intersection vertex entry (the piece after it lies inside the other operand) or

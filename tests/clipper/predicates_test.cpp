@@ -221,16 +221,16 @@ TEST(EvenOddRay, VerticesOnTheRayCountOnce) {
   const std::uint32_t next[] = {1, 2, 3, 0};
   // A subject point on the clip's edges, the clip moved up and right: below its bottom edge and
   // left of its left edge it is outside; on its top and right edges, inside.
-  EXPECT_FALSE(sos::subjectPointInsideClip({1, 0}, v, next, 4, counters));
-  EXPECT_FALSE(sos::subjectPointInsideClip({0, 1}, v, next, 4, counters));
-  EXPECT_TRUE(sos::subjectPointInsideClip({1, 2}, v, next, 4, counters));
-  EXPECT_TRUE(sos::subjectPointInsideClip({2, 1}, v, next, 4, counters));
+  EXPECT_FALSE(sos::subjectPointInsideClip({1, 0}, v, next, nullptr, 4, counters));
+  EXPECT_FALSE(sos::subjectPointInsideClip({0, 1}, v, next, nullptr, 4, counters));
+  EXPECT_TRUE(sos::subjectPointInsideClip({1, 2}, v, next, nullptr, 4, counters));
+  EXPECT_TRUE(sos::subjectPointInsideClip({2, 1}, v, next, nullptr, 4, counters));
   // A clip point on the subject's bottom edge, moved up: inside; on its top edge: outside.
-  EXPECT_TRUE(sos::clipPointInsideSubject({1, 0}, v, next, 4, counters));
-  EXPECT_FALSE(sos::clipPointInsideSubject({1, 2}, v, next, 4, counters));
+  EXPECT_TRUE(sos::clipPointInsideSubject({1, 0}, v, next, nullptr, 4, counters));
+  EXPECT_FALSE(sos::clipPointInsideSubject({1, 2}, v, next, nullptr, 4, counters));
   // On the left edge, moved right: inside; on the right edge: outside.
-  EXPECT_TRUE(sos::clipPointInsideSubject({0, 1}, v, next, 4, counters));
-  EXPECT_FALSE(sos::clipPointInsideSubject({2, 1}, v, next, 4, counters));
+  EXPECT_TRUE(sos::clipPointInsideSubject({0, 1}, v, next, nullptr, 4, counters));
+  EXPECT_FALSE(sos::clipPointInsideSubject({2, 1}, v, next, nullptr, 4, counters));
 }
 
 TEST(SegmentMeeting, EveryKindOfContact) {

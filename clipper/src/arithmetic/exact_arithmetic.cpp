@@ -115,12 +115,14 @@ int ExactArithmetic::exactlyAlongClip(std::uint32_t e, std::uint32_t a, std::uin
                                *counters_, sameLimit);
 }
 
-bool ExactArithmetic::subjectVertexInsideClip(const Operand& subject, std::uint32_t v, const Operand& clip) const {
-  return sos::subjectPointInsideClip(subject.vertices[v], clip.vertices.data(), clip.next.data(), clip.size(), *counters_);
+bool ExactArithmetic::subjectPointInsideClip(Point p, const Operand& clip, const std::uint32_t* edges,
+                                             std::size_t count) const {
+  return sos::subjectPointInsideClip(p, clip.vertices.data(), clip.next.data(), edges, count, *counters_);
 }
 
-bool ExactArithmetic::clipVertexInsideSubject(const Operand& clip, std::uint32_t v, const Operand& subject) const {
-  return sos::clipPointInsideSubject(clip.vertices[v], subject.vertices.data(), subject.next.data(), subject.size(), *counters_);
+bool ExactArithmetic::clipPointInsideSubject(Point q, const Operand& subject, const std::uint32_t* edges,
+                                             std::size_t count) const {
+  return sos::clipPointInsideSubject(q, subject.vertices.data(), subject.next.data(), edges, count, *counters_);
 }
 
 }  // namespace gh::detail

@@ -80,8 +80,11 @@ class ExactArithmetic {
     return exactlyAlongClip(edge, a.other, b.other, subject, clip, bothAtVertices);
   }
 
-  bool subjectVertexInsideClip(const Operand& subject, std::uint32_t v, const Operand& clip) const;
-  bool clipVertexInsideSubject(const Operand& clip, std::uint32_t v, const Operand& subject) const;
+  // Even-odd test of a point of one operand (a ring's first vertex) against the other operand,
+  // counting the `count` edges listed in `edges` (null: all of them), which must include every
+  // edge whose y-range holds the point's y (search/edge_slabs.h): phase 2's start.
+  bool subjectPointInsideClip(Point p, const Operand& clip, const std::uint32_t* edges, std::size_t count) const;
+  bool clipPointInsideSubject(Point q, const Operand& subject, const std::uint32_t* edges, std::size_t count) const;
 
  private:
   // a < b from certified intervals a +- ea, b +- eb when they are disjoint: -1 (a first), +1, or

@@ -67,24 +67,30 @@ void PaperArithmetic::testRow(const Operand& subject, std::uint32_t se, const Op
 
 namespace {
 
-// The library's ray test against every edge of an operand.
-bool insideOperand(Point p, const Operand& other, ExactCounters& counters) {
+// The library's ray test against the listed edges of an operand (all when `edges` is null).
+bool insideOperand(Point p, const Operand& other, const std::uint32_t* edges, std::size_t count,
+                   ExactCounters& counters) {
   return insideByRay(
       p,
-      [&other](auto&& visit) {
-        for (std::uint32_t e = 0; e < other.size(); ++e) visit(other.from(e), other.to(e));
+      [&](auto&& visit) {
+        for (std::size_t i = 0; i < count; ++i) {
+          const std::uint32_t e = edges ? edges[i] : static_cast<std::uint32_t>(i);
+          visit(other.from(e), other.to(e));
+        }
       },
       counters);
 }
 
 }  // namespace
 
-bool PaperArithmetic::subjectVertexInsideClip(const Operand& subject, std::uint32_t v, const Operand& clip) const {
-  return insideOperand(subject.vertices[v], clip, *counters_);
+bool PaperArithmetic::subjectPointInsideClip(Point p, const Operand& clip, const std::uint32_t* edges,
+                                             std::size_t count) const {
+  return insideOperand(p, clip, edges, count, *counters_);
 }
 
-bool PaperArithmetic::clipVertexInsideSubject(const Operand& clip, std::uint32_t v, const Operand& subject) const {
-  return insideOperand(clip.vertices[v], subject, *counters_);
+bool PaperArithmetic::clipPointInsideSubject(Point q, const Operand& subject, const std::uint32_t* edges,
+                                             std::size_t count) const {
+  return insideOperand(q, subject, edges, count, *counters_);
 }
 
 }  // namespace gh::detail

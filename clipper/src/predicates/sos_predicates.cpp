@@ -64,27 +64,30 @@ int compareAlongClip(Point q1, Point q2, Point p1, Point p2, Point s1, Point s2,
 
 namespace {
 
-auto edgesOf(const Point* v, const std::uint32_t* next, std::size_t n) {
-  return [v, next, n](auto&& visit) {
-    for (std::size_t e = 0; e < n; ++e) visit(v[e], v[next[e]]);
+auto edgesOf(const Point* v, const std::uint32_t* next, const std::uint32_t* edges, std::size_t n) {
+  return [v, next, edges, n](auto&& visit) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t e = edges ? edges[i] : static_cast<std::uint32_t>(i);
+      visit(v[e], v[next[e]]);
+    }
   };
 }
 
 }  // namespace
 
-bool subjectPointInsideClip(Point p, const Point* v, const std::uint32_t* next, std::size_t n,
-                            ExactCounters& counters) {
+bool subjectPointInsideClip(Point p, const Point* v, const std::uint32_t* next, const std::uint32_t* edges,
+                            std::size_t n, ExactCounters& counters) {
   // The clip is translated: a clip vertex q is above p's line iff q.y + eps^2 > p.y, i.e. q.y >= p.y.
   return insideByRay(
-      edgesOf(v, next, n), [p](Point q) { return q.y >= p.y; },
+      edgesOf(v, next, edges, n), [p](Point q) { return q.y >= p.y; },
       [p, &counters](Point a, Point b) { return clipEdgeSide(orientation(a, b, p, counters), a, b); });
 }
 
-bool clipPointInsideSubject(Point q, const Point* v, const std::uint32_t* next, std::size_t n,
-                            ExactCounters& counters) {
+bool clipPointInsideSubject(Point q, const Point* v, const std::uint32_t* next, const std::uint32_t* edges,
+                            std::size_t n, ExactCounters& counters) {
   // The point is translated: a subject vertex s is above iff s.y > q.y + eps^2, i.e. s.y > q.y.
   return insideByRay(
-      edgesOf(v, next, n), [q](Point s) { return s.y > q.y; },
+      edgesOf(v, next, edges, n), [q](Point s) { return s.y > q.y; },
       [q, &counters](Point a, Point b) { return subjectEdgeSide(orientation(a, b, q, counters), a, b); });
 }
 

@@ -45,10 +45,12 @@ int compareAlongClip(Point q1, Point q2, Point p1, Point p2, Point s1, Point s2,
 
 // Even-odd point-in-region with the clip translated (the one ray test, even_odd_ray.h): a subject
 // point against the clip's edges, and a clip point against the subject's edges. Edges are given
-// as (vertices, next) arrays: edge e runs from vertices[e] to vertices[next[e]].
-bool subjectPointInsideClip(Point p, const Point* clipVertices, const std::uint32_t* clipNext, std::size_t n,
-                            ExactCounters& counters);
-bool clipPointInsideSubject(Point q, const Point* subjectVertices, const std::uint32_t* subjectNext, std::size_t n,
-                            ExactCounters& counters);
+// as (vertices, next) arrays, edge e from vertices[e] to vertices[next[e]]: the `count` edges
+// listed in `edges`, or all `count` edges when `edges` is null. The list must hold every edge
+// whose y-range holds the point's y (search/edge_slabs.h).
+bool subjectPointInsideClip(Point p, const Point* clipVertices, const std::uint32_t* clipNext,
+                            const std::uint32_t* edges, std::size_t count, ExactCounters& counters);
+bool clipPointInsideSubject(Point q, const Point* subjectVertices, const std::uint32_t* subjectNext,
+                            const std::uint32_t* edges, std::size_t count, ExactCounters& counters);
 
 }  // namespace gh::detail::sos
