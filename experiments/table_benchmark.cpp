@@ -1,6 +1,8 @@
 // The paper's evaluation (Section 6, Table 1) on this machine, and Table 2 beyond the paper.
 //   Table 1: the paper's random workload, n in {10, 20, 50, 100, 200, 500, 1000, 2000} (+5000 with
-//            --full): Vatti (Clipper 6.4.2) and our three variants, all five operations.
+//            --full): Vatti (Clipper 6.4.2) and our three variants, all five operations; for the
+//            intersection also the floor under phase 1 (crossing_floor.h: scalar and vectorized)
+//            and naive and exact on every core.
 //   Table 2: simple, holes and realistic workloads at a few sizes, every variant and every peer,
 //            intersection and union.
 // Each timed iteration clips the next pair of a pool of 16 seeded pairs per size (the paper
@@ -36,8 +38,10 @@ int main(int argc, char** argv) {
   if (full) t1.push_back(5000);
   for (Op op : kAllOps) {
     for (const char* m : {"clipper6", "naive", "sweep", "exact"}) add("t1", "random", m, op, t1);
-    // The floor: the same on every operation (it does not trace), timed once.
-    if (op == Op::Intersection) add("t1", "random", "crossings", op, t1);
+    if (op == Op::Intersection) {
+      // The floor does not trace: the same for every operation, timed once.
+      for (const char* m : {"crossings", "crossings-simd", "naive@all", "exact@all"}) add("t1", "random", m, op, t1);
+    }
   }
   const std::map<std::string, std::vector<long>> t2{{"simple", {100, 1000}},
                                                      {"holes", {100, 1000}},

@@ -35,6 +35,7 @@ int run(int argc, char** argv) {
                       formatName = "wkt", svgPath;
   std::string checkName, peerName;
   bool wantStats = false, sanitize = false;
+  unsigned threads = 0;
   app.add_option("--op", opName,
                  "intersection | union | difference | reverse-difference | xor")
       ->required();
@@ -59,6 +60,8 @@ int run(int argc, char** argv) {
   app.add_option("--check", checkName,
                  "judge the result with an oracle: exact | sample (exit 1 if it fails)");
   app.add_flag("--sanitize", sanitize, "drop rings with fewer than 3 distinct vertices");
+  app.add_option("--threads", threads, "threads for the clip, 0 = every core (the answer is the same on any number)")
+      ->capture_default_str();
   if (const auto exitCode = gh::tools::parseCommandLine(app, "ghclip", argc, argv)) return *exitCode;
 
   const auto op = gh::parseOp(opName);
@@ -95,6 +98,7 @@ int run(int argc, char** argv) {
   const gh::Region subject = gh::tools::readRegion(subjectPath);
   const gh::Region clip = gh::tools::readRegion(clipPath);
   options.sanitize = sanitize;
+  options.threads = threads;
   const gh::peers::Peer* peer = nullptr;
   if (!peerName.empty()) {
     peer = gh::peers::findPeer(peerName);
@@ -147,6 +151,7 @@ int run(int argc, char** argv) {
       j["variant"] = gh::name(options);
       j["arithmetic"] = gh::name(options.arithmetic);
       j["search"] = gh::name(options.search);
+      j["threads"] = threads == 0 ? gh::availableThreads() : threads;
     }
     if (!check.is_null()) j["check"] = check;
     (outPath == "-" ? std::cerr : std::cout) << j.dump() << std::endl;

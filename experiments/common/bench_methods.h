@@ -36,8 +36,9 @@ inline const std::vector<work::Workload>& seededPool(const std::string& workload
 }
 
 // Our variants by the name of their combination of arithmetic and search (gh::parseOptions:
-// "naive", "sweep", "exact", "exact-allpairs", "exact-sweep"), a peer ("clipper6", ...), or
-// "crossings", the floor under phase 1 (crossing_floor.h: its answers are not clips, not checked), on a pool of workloads: iteration i clips pool[i % size], as the paper
+// "naive", "sweep", "exact", "exact-allpairs", "exact-sweep"; "@all" or "@N" after it for every core
+// or N threads, one otherwise), a peer ("clipper6", ...), or "crossings" / "crossings-simd", the floor
+// under phase 1 (crossing_floor.h: its answers are not clips, not checked), on a pool of workloads: iteration i clips pool[i % size], as the paper
 // averaged over fresh random polygons. Every answer of the last round through the pool is
 // checked (exact oracle for small inputs, sampling oracle otherwise).
 inline void runMethodOnPool(benchmark::State& state, const std::string& method, const std::vector<work::Workload>& pool,
@@ -72,14 +73,21 @@ inline void runMethodOnPool(benchmark::State& state, const std::string& method, 
       benchmark::DoNotOptimize(results[k].data());
     }
   } else {
-    const Options o = *parseOptions(method);
+    // "name@all": on every core (Options::threads = 0), "name@N": on N threads; else one.
+    const auto at = method.find('@');
+    Options o = *parseOptions(method.substr(0, at));
+    if (at != std::string::npos) {
+      const std::string threads = method.substr(at + 1);
+      o.threads = threads == "all" ? 0 : static_cast<unsigned>(std::stoul(threads));
+    }
     for (auto _ : state) {
       const std::size_t k = i++ % pool.size();
       results[k] = clip(pool[k].subject, pool[k].clip, op, o, &stats[k]);
       benchmark::DoNotOptimize(results[k].data());
     }
   }
-  double intersections = 0, outputVertices = 0, wrong = 0, filterFailures = 0, pairs = 0, constructions = 0;
+  double intersections = 0, outputVertices = 0, wrong = 0, filterFailures = 0, pairs = 0, constructions = 0,
+         expansions = 0;
   const std::size_t checked = std::min<std::size_t>(i, pool.size());
   // Answers are deterministic: check them in the first repetition only (the others would
   // recheck the same answers), and remember the verdict for the later ones.
@@ -90,6 +98,7 @@ inline void runMethodOnPool(benchmark::State& state, const std::string& method, 
   for (std::size_t k = 0; k < checked; ++k) {
     intersections += static_cast<double>(stats[k].intersections);
     filterFailures += static_cast<double>(stats[k].filterFailures);
+    expansions += static_cast<double>(stats[k].expansionDecisions);
     constructions += static_cast<double>(stats[k].exactConstructions);
     pairs += static_cast<double>(stats[k].candidatePairs);
     outputVertices += static_cast<double>(vertexCount(results[k]));
@@ -114,6 +123,7 @@ inline void runMethodOnPool(benchmark::State& state, const std::string& method, 
   if (!peers::findPeer(method)) {
     state.counters["intersections"] = intersections / m;
     state.counters["filter_failures"] = filterFailures / m;
+    state.counters["expansion_decisions"] = expansions / m;
     state.counters["exact_constructions"] = constructions / m;
     state.counters["candidate_pairs"] = pairs / m;
   }

@@ -36,7 +36,15 @@ std::optional<Sign> crossSignInDoubles(Point a, Point b, Point c, Point d) {
 }  // namespace
 
 Sign crossSign(Point a, Point b, Point c, Point d, ExactCounters& counters) {
-  // The floating-point filter (a running error bound), then the exact sum in doubles, then GMP.
+  // Shewchuk's stage-A bound (each factor is one rounded difference, as in orientation()), then
+  // the floating-point filter with a running error bound, then the exact sum in doubles, then GMP.
+  {
+    const double left = (b.x - a.x) * (d.y - c.y), right = (b.y - a.y) * (d.x - c.x);
+    const double sum = std::abs(left) + std::abs(right);
+    if (sum > 0x1p-900 && sum < 0x1p900) {
+      if (const auto s = certainSign(left - right, (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * sum)) return *s;
+    }
+  }
   const auto approximate = [&](auto numbers) {
     using N = typename decltype(numbers)::Number;
     const N value = (N(b.x) - N(a.x)) * (N(d.y) - N(c.y)) - (N(b.y) - N(a.y)) * (N(d.x) - N(c.x));
