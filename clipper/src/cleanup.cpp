@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "operand.h"
+#include "recycled.h"
 #include "predicates/orientation.h"
 
 namespace gh::detail {
@@ -129,27 +130,27 @@ class CleanUp {
   ExactCounters& counters_;
 };
 
-// Does any point occur twice? A flat open-addressing table: this runs over every output vertex of
-// the exact arithmetic.
+// Does any point occur twice? A flat open-addressing table of indices into `points`: this runs
+// over every output vertex of the exact arithmetic.
 bool anyVertexRepeats(const std::vector<Point>& points) {
   std::size_t capacity = 16;
   while (capacity < 2 * points.size()) capacity *= 2;
+  constexpr std::uint32_t kEmpty = 0xffffffffu;
   // Reused between calls: this runs on every answer of the exact arithmetic, and on small answers
   // the allocation would cost more than the pass.
-  thread_local std::vector<Point> slots;
-  thread_local std::vector<char> used;
-  if (slots.size() < capacity) slots.resize(capacity);
-  used.assign(capacity, 0);
+  thread_local std::vector<std::uint32_t> slots;
+  slots.assign(capacity, kEmpty);
   const PointHash hash;
-  for (const Point& p : points) {
-    for (std::size_t i = hash(p) & (capacity - 1);; i = (i + 1) & (capacity - 1)) {
-      if (!used[i]) {
-        used[i] = 1, slots[i] = p;
+  for (std::uint32_t k = 0; k < points.size(); ++k) {
+    for (std::size_t i = hash(points[k]) & (capacity - 1);; i = (i + 1) & (capacity - 1)) {
+      if (slots[i] == kEmpty) {
+        slots[i] = k;
         break;
       }
-      if (slots[i] == p) return true;
+      if (points[slots[i]] == points[k]) return true;
     }
   }
+  if (slots.capacity() * sizeof(std::uint32_t) > kKeepBytes) std::vector<std::uint32_t>().swap(slots);
   return false;
 }
 

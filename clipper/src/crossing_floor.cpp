@@ -12,12 +12,12 @@ std::size_t crossingFloor(const Region& subject, const Region& clip, std::vector
   PaperArithmetic::Extra none;
   out.clear();
   if (vectorized && rowKernelsAvailable()) {
+    // Into the clip's own kind of buffer (kept from call to call, as the clip keeps it).
     const EdgeArrays arrays(c);
-    CrossingBuffer<PaperArithmetic::Extra> buffer;
-    buffer.crossings.swap(out);
+    thread_local CrossingBuffer<PaperArithmetic::Extra> buffer;
+    buffer.clear();
     for (std::uint32_t i = 0; i < s.size(); ++i) paper.testRow(s, i, c, &arrays, buffer);
-    buffer.crossings.swap(out);
-    return out.size();
+    return buffer.crossings.size();
   }
   Crossing crossing;
   for (std::uint32_t i = 0; i < s.size(); ++i) {

@@ -12,9 +12,9 @@
 
 namespace gh::detail {
 
-// The crossings of the validated operands, in the loop's order; returns how many. `vectorized`:
-// the rows through the vectorized pair test (row_kernels.h) where the processor has it, else the
-// plain pair-by-pair loop.
+// How many crossings the validated operands have; the plain pair-by-pair loop puts them in `out`
+// in its order. `vectorized`: the rows through the vectorized pair test (row_kernels.h) where the
+// processor has it, into phase 1's own buffer instead.
 std::size_t crossingFloor(const Region& subject, const Region& clip, std::vector<Crossing>& out, bool vectorized);
 
 }  // namespace gh::detail

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "arithmetic/pair_test.h"
+#include "chunked_vector.h"
 #include "operand.h"
 #include "phase1_result.h"
 #include "predicates/exact_counters.h"
@@ -18,8 +19,8 @@ namespace gh::detail {
 template <class Extra>
 struct CrossingBuffer {
   static constexpr bool kHasExtra = !std::is_empty_v<Extra>;
-  std::vector<Crossing> crossings;
-  std::vector<Extra> extras;  // beside crossings, when the arithmetic has anything to keep
+  ChunkedVector<Crossing> crossings;
+  ChunkedVector<Extra> extras;  // beside crossings, when the arithmetic has anything to keep
   std::vector<std::uint32_t> degenerateSubject, degenerateClip;
   std::uint64_t pairs = 0;  // candidate pairs tested
   ExactCounters counters;
@@ -42,8 +43,7 @@ struct CrossingBuffer {
   // Gives back memory beyond what a large clip needs, so that one huge clip does not pin it.
   void trim() {
     constexpr std::size_t kKeep = std::size_t{1} << 20;  // crossings: 40 MiB at most
-    if (crossings.capacity() > kKeep) std::vector<Crossing>().swap(crossings);
-    if (extras.capacity() > kKeep) std::vector<Extra>().swap(extras);
+    crossings.trim(kKeep), extras.trim(kKeep);
   }
 };
 

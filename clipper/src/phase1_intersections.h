@@ -39,6 +39,7 @@
 #include "phase1_buffers.h"
 #include "phase1_result.h"
 #include "recycled.h"
+#include "scratch.h"
 
 namespace gh::detail {
 
@@ -144,15 +145,14 @@ void sortAlongEdge(SortItem* first, SortItem* last, std::vector<SortItem>& scrat
 // Sorts every bucket of `items` (given by offsets) along its edge, in pieces over `threads`.
 // compare(a, b, edge, piece) is the arithmetic's order along `edge` (the bucket).
 template <bool kAlphaOrderIsExact, class Compare>
-void sortBuckets(std::vector<SortItem>& items, const std::vector<std::uint32_t>& offsets, unsigned threads,
-                 Compare&& compare) {
+void sortBuckets(SortItem* items, const std::vector<std::uint32_t>& offsets, unsigned threads, Compare&& compare) {
   const std::size_t buckets = offsets.size() - 1;
   const Pieces pieces = piecesFor(buckets, threads, 256);
   runPieces(pieces, threads, [&](std::size_t p) {
     std::vector<SortItem> scratch;
     std::vector<std::uint32_t> slots;
     for (std::size_t b = pieces.begin(p); b < pieces.end(p); ++b) {
-      sortAlongEdge<kAlphaOrderIsExact>(items.data() + offsets[b], items.data() + offsets[b + 1], scratch, slots,
+      sortAlongEdge<kAlphaOrderIsExact>(items + offsets[b], items + offsets[b + 1], scratch, slots,
                                         [&](const SortItem& x, const SortItem& y) {
                                           return compare(x, y, static_cast<std::uint32_t>(b), p);
                                         });
@@ -160,68 +160,73 @@ void sortBuckets(std::vector<SortItem>& items, const std::vector<std::uint32_t>&
   });
 }
 
-// Bucket offsets of `count` items by key(i) < buckets: offsets[b] is where bucket b starts.
-template <class Key>
-void bucketOffsets(std::size_t count, std::size_t buckets, Key&& key, std::vector<std::uint32_t>& offsets) {
-  offsets.assign(buckets + 1, 0);
-  for (std::size_t i = 0; i < count; ++i) ++offsets[key(i) + 1];
-  for (std::size_t b = 0; b < buckets; ++b) offsets[b + 1] += offsets[b];
-}
-
-// Orders `found` (the crossings in the search's order) along the subject into r.subjectNodes and
-// along the clip into r.clipNodes.
+// Orders the crossings the pieces found (in piece order: the order one thread would have found
+// them in) along the subject into r.subjectNodes and along the clip into r.clipNodes.
 template <class Arithmetic, class Extra>
-void orderAlongEdges(Phase1Result& r, const std::vector<Crossing>& found, const std::vector<Extra>& foundExtras,
+void orderAlongEdges(Phase1Result& r, const std::vector<CrossingBuffer<Extra>>& pieces, std::size_t pieceCount,
                      const Arithmetic& arithmetic, unsigned threads) {
   constexpr bool kHasExtra = !std::is_empty_v<Extra>;
   constexpr bool kExact = Arithmetic::kAlphaOrderIsExact;
-  const std::size_t k = found.size();
-  const Extra none{};
-  auto extraOf = [&](const std::vector<Extra>& extras, std::size_t i) -> const Extra& {
-    if constexpr (kHasExtra) return extras[i];
-    return none;
+  // Every crossing found, in order, with its extra: f(index, crossing, extra).
+  auto forEachFound = [&](auto&& f) {
+    std::uint32_t i = 0;
+    const Extra none{};
+    for (std::size_t p = 0; p < pieceCount; ++p) {
+      const CrossingBuffer<Extra>& b = pieces[p];
+      if constexpr (kHasExtra) {
+        std::size_t j = 0;
+        b.crossings.forEach([&](const Crossing& c) { f(i++, c, b.extras[j++]); });
+      } else {
+        b.crossings.forEach([&](const Crossing& c) { f(i++, c, none); });
+      }
+    }
   };
+  std::size_t k = 0;
+  for (std::size_t p = 0; p < pieceCount; ++p) k += pieces[p].crossings.size();
+  if (k >= (std::size_t{1} << 31)) throw std::length_error("ghclip: more than 2^31 crossings");
   // Per piece of the sorts: their own counters (the exact arithmetic's fallbacks), summed after.
   std::vector<ExactCounters> counters(4 * std::size_t{std::max(threads, 1u)} + 1);
   std::vector<Arithmetic> local;
   for (ExactCounters& c : counters) local.emplace_back(c);
-  if (k >= (std::size_t{1} << 31)) throw std::length_error("ghclip: more than 2^31 crossings");
-  thread_local std::vector<std::uint32_t> offsets, at, position;
-  thread_local std::vector<SortItem> items;
-  items.resize(k);
+  thread_local std::vector<std::uint32_t> offsets, at;
+  ScratchLayout layout;
+  const auto itemsSlot = layout.add<SortItem>(k);
+  const auto positionSlot = layout.add<std::uint32_t>(k);
+  std::byte* base = scratch(layout.bytes());
+  SortItem* items = itemsSlot(base);
+  std::uint32_t* position = positionSlot(base);  // where each found crossing stands along the subject
 
   // Along the subject: crossings scattered into their edge's bucket (in the search's order: the
   // rows of all pairs come bucketed already), each bucket sorted, the nodes written in that order.
-  bucketOffsets(k, r.subject.size(), [&](std::size_t i) { return found[i].subjectEdge; }, offsets);
+  offsets.assign(r.subject.size() + 1, 0);
+  forEachFound([&](std::uint32_t, const Crossing& c, const Extra&) { ++offsets[c.subjectEdge + 1]; });
+  for (std::size_t b = 0; b < r.subject.size(); ++b) offsets[b + 1] += offsets[b];
   at.assign(offsets.begin(), offsets.end() - 1);
-  for (std::size_t i = 0; i < k; ++i) {
-    const Crossing& c = found[i];
-    const Extra& e = extraOf(foundExtras, i);
-    items[at[c.subjectEdge]++] = {c.alphaSubject, arithmetic.errorAlongSubject(e), c.point, c.clipEdge,
-                                  static_cast<std::uint32_t>(i), arithmetic.atInputVertex(e)};
-  }
+  forEachFound([&](std::uint32_t i, const Crossing& c, const Extra& e) {
+    items[at[c.subjectEdge]++] = {c.alphaSubject, arithmetic.errorAlongSubject(e), c.point, c.clipEdge, i,
+                                  arithmetic.atInputVertex(e)};
+  });
   sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::uint32_t edge, std::size_t p) {
     return local[p].compareAlongSubject(a, b, edge, r.subject, r.clip);
   });
   borrow<Spare::SubjectNodes>(r.subjectNodes);
   r.subjectNodes.reserve(k);
-  position.resize(k);  // where each found crossing stands along the subject
   for (std::uint32_t edge = 0; edge < r.subject.size(); ++edge) {
     for (std::uint32_t i = offsets[edge]; i < offsets[edge + 1]; ++i) {
-      r.subjectNodes.push_back({items[i].point, edge, 0, 0, 0});
+      r.subjectNodes.emplace_back(items[i].point, edge, 0);
       position[items[i].index] = i;
     }
   }
 
   // Along the clip: the same, each node linked to its copy in the subject's list.
-  bucketOffsets(k, r.clip.size(), [&](std::size_t i) { return found[i].clipEdge; }, offsets);
+  offsets.assign(r.clip.size() + 1, 0);
+  forEachFound([&](std::uint32_t, const Crossing& c, const Extra&) { ++offsets[c.clipEdge + 1]; });
+  for (std::size_t b = 0; b < r.clip.size(); ++b) offsets[b + 1] += offsets[b];
   at.assign(offsets.begin(), offsets.end() - 1);
-  for (std::size_t i = 0; i < k; ++i) {
-    const Crossing& c = found[i];
-    const Extra& e = extraOf(foundExtras, i);
+  forEachFound([&](std::uint32_t i, const Crossing& c, const Extra& e) {
     items[at[c.clipEdge]++] = {c.alphaClip, arithmetic.errorAlongClip(e), c.point, c.subjectEdge, position[i],
                                arithmetic.atInputVertex(e)};
-  }
+  });
   sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::uint32_t edge, std::size_t p) {
     return local[p].compareAlongClip(a, b, edge, r.subject, r.clip);
   });
@@ -230,8 +235,8 @@ void orderAlongEdges(Phase1Result& r, const std::vector<Crossing>& found, const 
   for (std::uint32_t edge = 0; edge < r.clip.size(); ++edge) {
     for (std::uint32_t j = offsets[edge]; j < offsets[edge + 1]; ++j) {
       const std::uint32_t i = items[j].index;
-      r.clipNodes.push_back({items[j].point, edge, i, 0, 0});
-      r.subjectNodes[i].neighbor = j;  // independent writes: their cache misses overlap
+      r.clipNodes.emplace_back(items[j].point, edge, i);
+      r.subjectNodes[i].setNeighbor(j);  // independent writes: their cache misses overlap
     }
   }
   for (const ExactCounters& c : counters) arithmetic.counters() += c;
@@ -282,21 +287,7 @@ Phase1Result findIntersections(Operand subject, Operand clip, const Search& sear
     }
   }
   stats.intersections = total;
-  if (pieces.pieces == 1) {
-    orderAlongEdges(r, buffers[0].crossings, buffers[0].extras, arithmetic, threads);
-  } else {
-    // The pieces' crossings in piece order: the order one thread would have found them in.
-    thread_local std::vector<Crossing> all;
-    thread_local std::vector<Extra> allExtras;
-    all.clear(), allExtras.clear();
-    for (std::size_t p = 0; p < pieces.pieces; ++p) {
-      all.insert(all.end(), buffers[p].crossings.begin(), buffers[p].crossings.end());
-      if constexpr (CrossingBuffer<Extra>::kHasExtra) {
-        allExtras.insert(allExtras.end(), buffers[p].extras.begin(), buffers[p].extras.end());
-      }
-    }
-    orderAlongEdges(r, all, allExtras, arithmetic, threads);
-  }
+  orderAlongEdges(r, buffers, pieces.pieces, arithmetic, threads);
   for (std::size_t p = 0; p < pieces.pieces; ++p) buffers[p].trim();
   return r;
 }

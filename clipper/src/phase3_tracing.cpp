@@ -4,7 +4,7 @@
 
 #include "ghclip/errors.h"
 #include "parallel.h"
-#include "recycled.h"
+#include "scratch.h"
 
 namespace gh::detail {
 namespace {
@@ -32,10 +32,9 @@ struct Step {
   std::uint32_t crossing;
 };
 
-// The original vertices passed from `from` to `to`, forward or backward along the ring.
-std::uint32_t runLength(const VertexGraph& g, std::uint32_t from, std::uint32_t to, bool forward) {
+// The original vertices passed from `from` to `to`, forward or backward along their ring.
+std::uint32_t runLength(const VertexGraph& g, std::uint32_t from, std::uint32_t to, bool forward, const RingInfo& ring) {
   const std::uint32_t fromEdge = g.node(from).edge, toEdge = g.node(to).edge;
-  const RingInfo& ring = g.ringOf(from);
   if (forward) {
     if (fromEdge == toEdge && to > from) return 0;
     const std::uint32_t first = fromEdge + 1 == ring.endVertex ? ring.firstVertex : fromEdge + 1;
@@ -56,28 +55,44 @@ void traceOneOp(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
   const bool flipSubject = !keepsSubjectPiecesInsideClip(op);
   const bool flipClip = !keepsClipPiecesInsideSubject(op);
   const std::uint32_t k = g.firstClipNode, nodes = g.nodeCount();
-  // Recycled arrays (recycled.h), every element written before it is read.
-  std::vector<Step> steps;
-  std::vector<std::uint32_t> counts, sequence;
-  std::vector<std::uint8_t> forwards, visited;
-  borrow<Spare::TraceSteps>(steps), borrow<Spare::TraceCounts>(counts), borrow<Spare::TraceFlags>(forwards);
-  borrow<Spare::TraceSequence>(sequence);
-  steps.resize(nodes), counts.resize(nodes), forwards.resize(nodes);
+  // Working arrays in the thread's scratch block (scratch.h), every element written before it is
+  // read: phase 1's sort items are gone by now, this takes their place.
+  ScratchLayout layout;
+  const auto stepsSlot = layout.add<Step>(nodes);
+  const auto countsSlot = layout.add<std::uint32_t>(nodes);
+  const auto forwardsSlot = layout.add<std::uint8_t>(nodes);
+  const auto visitedSlot = layout.add<std::uint8_t>(k);
+  const auto sequenceSlot = layout.add<std::uint32_t>(k);
+  const auto offsetsSlot = layout.add<std::size_t>(std::size_t{k} + 1);
+  std::byte* base = scratch(layout.bytes());
+  Step* steps = stepsSlot(base);
+  std::uint32_t* counts = countsSlot(base);
+  std::uint8_t* forwards = forwardsSlot(base);
+  std::uint8_t* visited = visitedSlot(base);
+  std::uint32_t* sequence = sequenceSlot(base);
+  std::size_t* offsets = offsetsSlot(base);
   const Pieces nodePieces = piecesFor(nodes, threads, 1 << 14);
   runPieces(nodePieces, threads, [&](std::size_t p) {
-    for (auto n = static_cast<std::uint32_t>(nodePieces.begin(p)); n < nodePieces.end(p); ++n) {
+    const auto begin = static_cast<std::uint32_t>(nodePieces.begin(p)), end = static_cast<std::uint32_t>(nodePieces.end(p));
+    if (begin == end) return;
+    // The rings of the piece's nodes, in node order: found once, then followed.
+    auto ring = std::upper_bound(g.ringsByNode.begin(), g.ringsByNode.end(), begin,
+                                 [](std::uint32_t node, const auto& r) { return node < r.second; });
+    for (std::uint32_t n = begin; n < end; ++n) {
+      while (n >= ring->second) ++ring;
+      const RingInfo& info = g.isSubjectNode(n) ? g.subjectRings[ring->first] : g.clipRings[ring->first];
       const Node& at = g.node(n);
-      const bool forward = (at.entry != 0) != (g.isSubjectNode(n) ? flipSubject : flipClip);
-      const std::uint32_t to = forward ? g.next(n) : g.prev(n);
-      steps[n] = {g.neighbor(to), g.isSubjectNode(n) ? n : at.neighbor};
-      counts[n] = 1 + runLength(g, n, to, forward);
+      const bool forward = at.entry() != (g.isSubjectNode(n) ? flipSubject : flipClip);
+      const std::uint32_t to = forward ? VertexGraph::next(n, info) : VertexGraph::prev(n, info);
+      steps[n] = {g.neighbor(to), g.isSubjectNode(n) ? n : at.neighbor()};
+      counts[n] = 1 + runLength(g, n, to, forward, info);
       forwards[n] = forward;
     }
   });
 
-  visited.assign(k, 0);
+  std::fill(visited, visited + k, std::uint8_t{0});
+  std::uint32_t walked = 0;
   std::vector<std::uint32_t> ringEnds;
-  sequence.reserve(k);
   // Every step moves to another intersection vertex; a closed trace visits each at most once.
   const std::size_t bound = std::size_t{nodes} + 4;
   for (std::uint32_t first = 0; first < k; ++first) {
@@ -86,7 +101,8 @@ void traceOneOp(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
     for (std::size_t count = 0;; ++count) {
       if (count > bound) throw ClipFailure("tracing did not close within its bound");
       visited[steps[current].crossing] = 1;
-      sequence.push_back(current);
+      if (walked == k) throw ClipFailure("tracing did not close within its bound");
+      sequence[walked++] = current;
       current = steps[current].next;
       const std::uint32_t crossing = steps[current].crossing;
       if (crossing == first) break;  // back at the first vertex, or at its other copy
@@ -94,14 +110,13 @@ void traceOneOp(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
         throw ClipFailure("tracing reached a used intersection vertex (inconsistent entry/exit marks)");
       }
     }
-    ringEnds.push_back(static_cast<std::uint32_t>(sequence.size()));
+    ringEnds.push_back(walked);
   }
 
-  std::vector<std::size_t> offsets(sequence.size() + 1);
   offsets[0] = out.points.size();
-  for (std::size_t i = 0; i < sequence.size(); ++i) offsets[i + 1] = offsets[i] + counts[sequence[i]];
-  out.points.resize(offsets.back());
-  const Pieces fillPieces = piecesFor(sequence.size(), threads, 1 << 14);
+  for (std::uint32_t i = 0; i < walked; ++i) offsets[i + 1] = offsets[i] + counts[sequence[i]];
+  out.points.resize(offsets[walked]);
+  const Pieces fillPieces = piecesFor(walked, threads, 1 << 14);
   runPieces(fillPieces, threads, [&](std::size_t p) {
     for (std::size_t i = fillPieces.begin(p); i < fillPieces.end(p); ++i) {
       const std::uint32_t n = sequence[i];
@@ -126,8 +141,6 @@ void traceOneOp(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
     }
   });
   for (std::uint32_t end : ringEnds) out.start.push_back(static_cast<std::uint32_t>(offsets[end]));
-  giveBack<Spare::TraceSteps>(steps), giveBack<Spare::TraceCounts>(counts), giveBack<Spare::TraceFlags>(forwards);
-  giveBack<Spare::TraceSequence>(sequence);
 
   for (const RingInfo& ring : g.subjectRings) {
     if (ring.head == kNone && ring.startsInside == keepsSubjectPiecesInsideClip(op)) {

@@ -9,7 +9,7 @@
 
 namespace gh::detail {
 
-enum class Spare { SubjectNodes, ClipNodes, TracedPoints, TraceSteps, TraceCounts, TraceFlags, TraceSequence };
+enum class Spare { SubjectNodes, ClipNodes, TracedPoints };
 
 inline constexpr std::size_t kKeepBytes = std::size_t{64} << 20;
 

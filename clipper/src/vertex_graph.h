@@ -14,7 +14,9 @@
 // instead of pointers: a bad link is a bounds error instead of a wild pointer.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "phase1_result.h"
@@ -39,6 +41,8 @@ struct VertexGraph {
   std::uint32_t firstClipNode = 0;  // k
   std::vector<RingInfo> subjectRings;
   std::vector<RingInfo> clipRings;
+  // The rings with crossings, by their nodes: ring index and one past its last node, in node order.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ringsByNode;
 
   std::uint32_t nodeCount() const { return 2 * firstClipNode; }
   bool isSubjectNode(std::uint32_t n) const { return n < firstClipNode; }
@@ -48,22 +52,22 @@ struct VertexGraph {
   }
   // The node id of n's copy in the other list.
   std::uint32_t neighbor(std::uint32_t n) const {
-    return isSubjectNode(n) ? firstClipNode + (*subjectNodes)[n].neighbor : (*clipNodes)[n - firstClipNode].neighbor;
+    return isSubjectNode(n) ? firstClipNode + (*subjectNodes)[n].neighbor() : (*clipNodes)[n - firstClipNode].neighbor();
   }
   // The crossing n is a copy of, numbered by its subject node.
   std::uint32_t crossingOf(std::uint32_t n) const { return isSubjectNode(n) ? n : neighbor(n); }
   const Operand& operandOf(std::uint32_t n) const { return isSubjectNode(n) ? *subject : *clip; }
+  // The ring of node n (a binary search over the rings with crossings).
   const RingInfo& ringOf(std::uint32_t n) const {
-    return isSubjectNode(n) ? subjectRings[node(n).ring] : clipRings[node(n).ring];
+    const auto it = std::upper_bound(ringsByNode.begin(), ringsByNode.end(), n,
+                                     [](std::uint32_t node, const auto& ring) { return node < ring.second; });
+    return isSubjectNode(n) ? subjectRings[it->first] : clipRings[it->first];
   }
-  std::uint32_t next(std::uint32_t n) const {
-    const RingInfo& r = ringOf(n);
-    return n + 1 < r.endNode ? n + 1 : r.head;
-  }
-  std::uint32_t prev(std::uint32_t n) const {
-    const RingInfo& r = ringOf(n);
-    return n > r.head ? n - 1 : r.endNode - 1;
-  }
+  // The next and previous intersection vertex along n's ring r.
+  static std::uint32_t next(std::uint32_t n, const RingInfo& r) { return n + 1 < r.endNode ? n + 1 : r.head; }
+  static std::uint32_t prev(std::uint32_t n, const RingInfo& r) { return n > r.head ? n - 1 : r.endNode - 1; }
+  std::uint32_t next(std::uint32_t n) const { return next(n, ringOf(n)); }
+  std::uint32_t prev(std::uint32_t n) const { return prev(n, ringOf(n)); }
 };
 
 // Builds the rings over phase 1's lists; phase 2 then marks them. The graph refers to phase1's

@@ -45,7 +45,7 @@ TEST(Phase2, LocatesRingStartsAndAlternatesEntryAndExit) {
     std::uint32_t n = ring->head;
     int count = 0;
     do {
-      EXPECT_EQ(g.node(n).entry != 0, expected);
+      EXPECT_EQ(g.node(n).entry(), expected);
       expected = !expected;
       n = g.next(n);
       ++count;

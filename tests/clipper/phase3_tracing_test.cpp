@@ -54,7 +54,7 @@ TEST(Tracing, BrokenListsRaiseClipFailureInsteadOfLooping) {
   VertexGraph& g = gate.graph;
   EXPECT_NO_THROW(traceResult(g, Op::Intersection));
   // Point every clip node's neighbour at one subject node: traces can no longer close.
-  for (Node& n : *g.clipNodes) n.neighbor = 1;
+  for (Node& n : *g.clipNodes) n.setNeighbor(1);
   EXPECT_THROW(traceResult(g, Op::Intersection), ClipFailure);
 }
 
@@ -65,14 +65,14 @@ TEST(Tracing, ReusedIntersectionVertexRaisesClipFailure) {
   VertexGraph& g = gate.graph;
   int failures = 0;
   for (std::uint32_t n = 0; n < g.nodeCount(); ++n) {
-    g.node(n).entry ^= 1;
+    g.node(n).setEntry(!g.node(n).entry());
     try {
       traceResult(g, Op::Intersection);
     } catch (const ClipFailure& e) {
       ++failures;
       EXPECT_NE(std::string(e.what()).find("tracing"), std::string::npos);
     }
-    g.node(n).entry ^= 1;
+    g.node(n).setEntry(!g.node(n).entry());
   }
   EXPECT_GT(failures, 0);
 }

@@ -61,7 +61,7 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
   x.alphaClip = oQ1 == Sign::Zero ? 0 : oQ2 == Sign::Zero ? 1 : certifiedRatio(dQ1, dQ2, extra.errClip);
   // The point in the limit eps -> 0, once, from the original coordinates: that input vertex where
   // the limit is one, else the crossing faithfully rounded (construction.h).
-  extra.atInputVertex = true;
+  bool atInputVertex = true;
   if (oP1 == Sign::Zero) {
     x.point = p1;
   } else if (oP2 == Sign::Zero) {
@@ -71,9 +71,10 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
   } else if (oQ2 == Sign::Zero) {
     x.point = q2;
   } else {
-    extra.atInputVertex = false;
+    atInputVertex = false;
     x.point = constructCrossing(p1, p2, q1, q2, *counters_);
   }
+  if (atInputVertex) extra.errSubject = -extra.errSubject;  // the sign bit says it (-0.0 too)
   return {PairTest::Kind::Crossing, 0};
 }
 
