@@ -167,28 +167,60 @@ void orderAlongEdges(Phase1Result& r, const std::vector<CrossingBuffer<Extra>>& 
                      const Arithmetic& arithmetic, unsigned threads) {
   constexpr bool kHasExtra = !std::is_empty_v<Extra>;
   constexpr bool kExact = Arithmetic::kAlphaOrderIsExact;
-  // Every crossing found, in order, with its extra: f(index, crossing, extra).
-  auto forEachFound = [&](auto&& f) {
-    std::uint32_t i = 0;
-    const Extra none{};
-    for (std::size_t p = 0; p < pieceCount; ++p) {
+  // The crossings found, in order (pieces one after the other), with their extras: f(index,
+  // crossing, extra) for the indices in [begin, end).
+  std::vector<std::size_t> pieceStart(pieceCount + 1, 0);
+  for (std::size_t p = 0; p < pieceCount; ++p) pieceStart[p + 1] = pieceStart[p] + pieces[p].crossings.size();
+  const std::size_t k = pieceStart[pieceCount];
+  if (k >= (std::size_t{1} << 31)) throw std::length_error("ghclip: more than 2^31 crossings");
+  const Extra none{};
+  auto forEachFound = [&](std::size_t begin, std::size_t end, auto&& f) {
+    std::size_t p = static_cast<std::size_t>(std::upper_bound(pieceStart.begin(), pieceStart.end(), begin) - pieceStart.begin()) - 1;
+    for (std::size_t i = begin; i < end; ++p) {
       const CrossingBuffer<Extra>& b = pieces[p];
-      if constexpr (kHasExtra) {
-        std::size_t j = 0;
-        b.crossings.forEach([&](const Crossing& c) { f(i++, c, b.extras[j++]); });
-      } else {
-        b.crossings.forEach([&](const Crossing& c) { f(i++, c, none); });
+      for (std::size_t j = i - pieceStart[p]; j < b.crossings.size() && i < end; ++j, ++i) {
+        if constexpr (kHasExtra) {
+          f(static_cast<std::uint32_t>(i), b.crossings[j], b.extras[j]);
+        } else {
+          f(static_cast<std::uint32_t>(i), b.crossings[j], none);
+        }
       }
     }
   };
-  std::size_t k = 0;
-  for (std::size_t p = 0; p < pieceCount; ++p) k += pieces[p].crossings.size();
-  if (k >= (std::size_t{1} << 31)) throw std::length_error("ghclip: more than 2^31 crossings");
+  // Scatters the crossings into buckets by key(crossing) (stable: the found order within each
+  // bucket), items[slot] = make(index, crossing, extra); offsets gets where each bucket starts. In
+  // pieces over threads when there are many crossings per bucket: each piece counts its range,
+  // then writes from where the pieces before it in that bucket end.
+  // Kept by the calling thread; named through a reference, so that lambdas running on other
+  // threads see this thread's vector, not their own.
+  thread_local std::vector<std::uint32_t> bucketStarts;
+  std::vector<std::uint32_t>& offsets = bucketStarts;
+  auto scatter = [&](std::size_t buckets, SortItem* items, auto&& key, auto&& make) {
+    const Pieces ranges = k > 4 * buckets ? piecesFor(k, threads, std::size_t{1} << 15) : Pieces{k, 1};
+    std::vector<std::vector<std::uint32_t>> counts(ranges.pieces, std::vector<std::uint32_t>(buckets, 0));
+    runPieces(ranges, threads, [&](std::size_t p) {
+      forEachFound(ranges.begin(p), ranges.end(p), [&](std::uint32_t, const Crossing& c, const Extra&) { ++counts[p][key(c)]; });
+    });
+    offsets.assign(buckets + 1, 0);
+    for (std::size_t b = 0; b < buckets; ++b) {
+      std::uint32_t at = offsets[b];
+      for (std::size_t p = 0; p < ranges.pieces; ++p) {
+        const std::uint32_t n = counts[p][b];
+        counts[p][b] = at;
+        at += n;
+      }
+      offsets[b + 1] = at;
+    }
+    runPieces(ranges, threads, [&](std::size_t p) {
+      std::vector<std::uint32_t>& at = counts[p];
+      forEachFound(ranges.begin(p), ranges.end(p),
+                   [&](std::uint32_t i, const Crossing& c, const Extra& e) { items[at[key(c)]++] = make(i, c, e); });
+    });
+  };
   // Per piece of the sorts: their own counters (the exact arithmetic's fallbacks), summed after.
   std::vector<ExactCounters> counters(4 * std::size_t{std::max(threads, 1u)} + 1);
   std::vector<Arithmetic> local;
   for (ExactCounters& c : counters) local.emplace_back(c);
-  thread_local std::vector<std::uint32_t> offsets, at;
   ScratchLayout layout;
   const auto itemsSlot = layout.add<SortItem>(k);
   const auto positionSlot = layout.add<std::uint32_t>(k);
@@ -198,47 +230,47 @@ void orderAlongEdges(Phase1Result& r, const std::vector<CrossingBuffer<Extra>>& 
 
   // Along the subject: crossings scattered into their edge's bucket (in the search's order: the
   // rows of all pairs come bucketed already), each bucket sorted, the nodes written in that order.
-  offsets.assign(r.subject.size() + 1, 0);
-  forEachFound([&](std::uint32_t, const Crossing& c, const Extra&) { ++offsets[c.subjectEdge + 1]; });
-  for (std::size_t b = 0; b < r.subject.size(); ++b) offsets[b + 1] += offsets[b];
-  at.assign(offsets.begin(), offsets.end() - 1);
-  forEachFound([&](std::uint32_t i, const Crossing& c, const Extra& e) {
-    items[at[c.subjectEdge]++] = {c.alphaSubject, arithmetic.errorAlongSubject(e), c.point, c.clipEdge, i,
-                                  arithmetic.atInputVertex(e)};
-  });
+  scatter(
+      r.subject.size(), items, [](const Crossing& c) { return c.subjectEdge; },
+      [&](std::uint32_t i, const Crossing& c, const Extra& e) {
+        return SortItem{c.alphaSubject, arithmetic.errorAlongSubject(e), c.point, c.clipEdge, i, arithmetic.atInputVertex(e)};
+      });
   sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::uint32_t edge, std::size_t p) {
     return local[p].compareAlongSubject(a, b, edge, r.subject, r.clip);
   });
   borrow<Spare::SubjectNodes>(r.subjectNodes);
-  r.subjectNodes.reserve(k);
-  for (std::uint32_t edge = 0; edge < r.subject.size(); ++edge) {
-    for (std::uint32_t i = offsets[edge]; i < offsets[edge + 1]; ++i) {
-      r.subjectNodes.emplace_back(items[i].point, edge, 0);
-      position[items[i].index] = i;
+  r.subjectNodes.resize(k);
+  const Pieces subjectEdges = piecesFor(r.subject.size(), threads, 256);
+  runPieces(subjectEdges, threads, [&](std::size_t p) {
+    for (auto edge = static_cast<std::uint32_t>(subjectEdges.begin(p)); edge < subjectEdges.end(p); ++edge) {
+      for (std::uint32_t i = offsets[edge]; i < offsets[edge + 1]; ++i) {
+        r.subjectNodes[i] = Node(items[i].point, edge, 0);
+        position[items[i].index] = i;
+      }
     }
-  }
+  });
 
   // Along the clip: the same, each node linked to its copy in the subject's list.
-  offsets.assign(r.clip.size() + 1, 0);
-  forEachFound([&](std::uint32_t, const Crossing& c, const Extra&) { ++offsets[c.clipEdge + 1]; });
-  for (std::size_t b = 0; b < r.clip.size(); ++b) offsets[b + 1] += offsets[b];
-  at.assign(offsets.begin(), offsets.end() - 1);
-  forEachFound([&](std::uint32_t i, const Crossing& c, const Extra& e) {
-    items[at[c.clipEdge]++] = {c.alphaClip, arithmetic.errorAlongClip(e), c.point, c.subjectEdge, position[i],
-                               arithmetic.atInputVertex(e)};
-  });
+  scatter(
+      r.clip.size(), items, [](const Crossing& c) { return c.clipEdge; },
+      [&](std::uint32_t i, const Crossing& c, const Extra& e) {
+        return SortItem{c.alphaClip, arithmetic.errorAlongClip(e), c.point, c.subjectEdge, position[i], arithmetic.atInputVertex(e)};
+      });
   sortBuckets<kExact>(items, offsets, threads, [&](const SortItem& a, const SortItem& b, std::uint32_t edge, std::size_t p) {
     return local[p].compareAlongClip(a, b, edge, r.subject, r.clip);
   });
   borrow<Spare::ClipNodes>(r.clipNodes);
-  r.clipNodes.reserve(k);
-  for (std::uint32_t edge = 0; edge < r.clip.size(); ++edge) {
-    for (std::uint32_t j = offsets[edge]; j < offsets[edge + 1]; ++j) {
-      const std::uint32_t i = items[j].index;
-      r.clipNodes.emplace_back(items[j].point, edge, i);
-      r.subjectNodes[i].setNeighbor(j);  // independent writes: their cache misses overlap
+  r.clipNodes.resize(k);
+  const Pieces clipEdges = piecesFor(r.clip.size(), threads, 256);
+  runPieces(clipEdges, threads, [&](std::size_t p) {
+    for (auto edge = static_cast<std::uint32_t>(clipEdges.begin(p)); edge < clipEdges.end(p); ++edge) {
+      for (std::uint32_t j = offsets[edge]; j < offsets[edge + 1]; ++j) {
+        const std::uint32_t i = items[j].index;
+        r.clipNodes[j] = Node(items[j].point, edge, i);
+        r.subjectNodes[i].setNeighbor(j);  // independent writes: their cache misses overlap
+      }
     }
-  }
+  });
   for (const ExactCounters& c : counters) arithmetic.counters() += c;
 }
 
