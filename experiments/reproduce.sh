@@ -80,7 +80,10 @@ step "exact vs naive on 10^5 degenerate cases -> results/exact-degenerate.md (ab
 step "what exactness costs: exact vs naive on the paper's workload -> results/exact-speed.md (under a minute)"
 "$BIN/exact_speed" results/exact-speed.md >results/exact-speed.log 2>&1 || { tail -20 results/exact-speed.log; exit 1; }
 
-step "sweep benchmark (realistic and random workloads) -> results/sweep.md, sweep.json, sweep.svg"
+step "peak memory of a clip per crossing -> results/memory.md (under a minute)"
+"$BIN/clip_memory" results/memory.md
+
+step "sweep benchmark (circles, archipelagos, pie and flower, random) -> results/sweep.md, sweep.json, sweep.svg"
 SWEEP_ARGS=()
 [[ "${GHCLIP_FULL:-0}" == 1 ]] && SWEEP_ARGS+=(--full)
 "$BIN/sweep_benchmark" "${SWEEP_ARGS[@]}" --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \

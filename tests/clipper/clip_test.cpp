@@ -8,6 +8,7 @@
 
 #include "common/hand_cases.h"
 #include "ghclip/clip.h"
+#include "ghclip/errors.h"
 #include "ghclip/measure.h"
 #include "ghoracle/exact_oracle.h"
 #include "ghoracle/invariants.h"
@@ -170,6 +171,33 @@ TEST(Stats, CountTheExactFallbacks) {
   Stats paper;
   clip(c.subject, c.clip, Op::Intersection, optionsOf(Variant::Naive), &paper);
   EXPECT_EQ(paper.filterFailures, 0u);
+}
+
+// Threads split phases 1, 2 and 3 into pieces; the answer must be the one-thread answer, bit for
+// bit, for both arithmetics and every operation, on inputs large enough to be split.
+TEST(Threads, SameAnswerOnEveryNumberOfThreads) {
+  const std::pair<const char*, std::size_t> cases[] = {
+      {"random", 600}, {"circles", 40000}, {"archipelago", 40000}, {"pie", 200}, {"bitset-grid", 400}};
+  for (const auto& [workload, n] : cases) {
+    const work::Workload w = work::generate(workload, n, 3);
+    for (Arithmetic a : {Arithmetic::Exact, Arithmetic::Paper}) {
+      for (Op op : kAllOps) {
+        Options one, four;
+        one.arithmetic = four.arithmetic = a;
+        four.threads = 4;
+        Region r1, r4;
+        try {
+          r1 = clip(w.subject, w.clip, op, one);
+        } catch (const ClipFailure&) {
+          EXPECT_THROW(clip(w.subject, w.clip, op, four), ClipFailure);
+          continue;
+        }
+        r4 = clip(w.subject, w.clip, op, four);
+        EXPECT_EQ(r1.size(), r4.size()) << workload << " " << name(op) << " " << name(a);
+        EXPECT_TRUE(r1 == r4) << workload << " " << name(op) << " " << name(a);
+      }
+    }
+  }
 }
 
 Region square(double x0, double y0, double size) {

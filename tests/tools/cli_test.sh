@@ -74,6 +74,16 @@ check "--variant with --arithmetic: one line" test "$(wc -l <"$TMP/both.err")" -
 "$BIN/ghclip" --op union --search diagonal "$EX/square.geojson" "$EX/gate.geojson" 2>/dev/null >/dev/null
 check "unknown --search: exit 2" test $? -eq 2
 
+# Threads do not change the answer: byte for byte the same file.
+"$BIN/ghgen" circles --n 30000 --seed 2 -o "$TMP/circles.wkt"
+sed -n 1p "$TMP/circles.wkt" >"$TMP/cs.wkt"
+sed -n 2p "$TMP/circles.wkt" >"$TMP/cc.wkt"
+"$BIN/ghclip" --op union --threads 1 "$TMP/cs.wkt" "$TMP/cc.wkt" -o "$TMP/t1.wkt"
+"$BIN/ghclip" --op union --threads 2 "$TMP/cs.wkt" "$TMP/cc.wkt" -o "$TMP/t2.wkt"
+check "--threads 1 and 2: the same answer" cmp -s "$TMP/t1.wkt" "$TMP/t2.wkt"
+"$BIN/ghclip" --op union --threads many "$TMP/cs.wkt" "$TMP/cc.wkt" 2>/dev/null >/dev/null
+check "--threads many: exit 2" test $? -eq 2
+
 # ghcheck: pass (0), fail (1), bad input (2); --expected writes the exact answer.
 "$BIN/ghcheck" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/r.wkt" >"$TMP/v.txt"
 check "ghcheck passes ghclip's answer" test $? -eq 0
