@@ -3,21 +3,28 @@
 
 #include <CGAL/Arr_curve_data_traits_2.h>
 #include <CGAL/Arr_extended_dcel.h>
-#include <CGAL/Arr_segment_traits_2.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/convex_hull_2.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <new>
 #include <set>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
+#include "ghclip/errors.h"
 #include "ghclip/validate.h"
-#include "ghoracle/tolerance.h"
 #include "judging_scale.h"
+#include "point_hash.h"
+#include "robust_segment_traits.h"
 
 namespace gh::oracle {
 namespace {
@@ -26,29 +33,38 @@ using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using FT = Kernel::FT;
 using KPoint = Kernel::Point_2;
 using EFT = Kernel::Exact_kernel::FT;  // exact rationals
-using SegmentTraits = CGAL::Arr_segment_traits_2<Kernel>;
+using SegmentTraits = RobustSegmentTraits<Kernel>;
 
-// How many segments of S, C and R run along a piece of curve.
+// How many segments of S, C and R run along a piece of curve, and the signed number of rounding
+// zone edges (+1 when the zone lies to the left of the piece directed left to right, -1 when to
+// its right).
 struct Counts {
-  int s = 0, c = 0, r = 0;
-  bool operator==(const Counts& o) const { return s == o.s && c == o.c && r == o.r; }
+  int s = 0, c = 0, r = 0, z = 0;
+  bool operator==(const Counts& o) const { return s == o.s && c == o.c && r == o.r && z == o.z; }
   int parityBits() const { return (s & 1) | (c & 1) << 1 | (r & 1) << 2; }
+  bool onOperands() const { return s + c > 0; }
 };
 // Overlapping segments add up their counts.
 struct AddCounts {
   Counts operator()(const Counts& a, const Counts& b) const {
-    return {a.s + b.s, a.c + b.c, a.r + b.r};
+    return {a.s + b.s, a.c + b.c, a.r + b.r, a.z + b.z};
   }
 };
 
 using Traits = CGAL::Arr_curve_data_traits_2<SegmentTraits, Counts, AddCounts>;
-// Face data: parity bits of S (1), C (2), R (4), and kVisited during propagation.
-using Dcel = CGAL::Arr_face_extended_dcel<Traits, int>;
+constexpr int kS = 1, kC = 2, kR = 4;
+// Parity bits of S (kS), C (kC) and R (kR), and how many rounding zones hold the face.
+struct FaceData {
+  int bits = 0;
+  int zones = 0;
+  bool visited = false;
+};
+using Dcel = CGAL::Arr_face_extended_dcel<Traits, FaceData>;
 using Arrangement = CGAL::Arrangement_2<Traits, Dcel>;
 using Face = Arrangement::Face_const_handle;
 using Halfedge = Arrangement::Halfedge_const_handle;
-
-constexpr int kS = 1, kC = 2, kR = 4, kVisited = 8;
+using Vertex = Arrangement::Vertex_const_handle;
+using Interval = CGAL::Interval_nt<true>;  // protected: every interval contains the truth
 
 void addSegments(const Region& region, Counts counts, std::vector<Traits::Curve_2>& out) {
   for (const Ring& ring : region) {
@@ -60,19 +76,23 @@ void addSegments(const Region& region, Counts counts, std::vector<Traits::Curve_
   }
 }
 
-// Parities from the unbounded face outward, across every edge (breadth first).
-void propagateParities(Arrangement& arr) {
-  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) f->set_data(0);
+// Parities and zone depths from the unbounded face outward, across every edge (breadth first).
+// A face lies to the left of each of its halfedges.
+void propagate(Arrangement& arr) {
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) f->set_data({});
   std::vector<Arrangement::Face_handle> queue{arr.unbounded_face()};
-  arr.unbounded_face()->set_data(kVisited);
+  arr.unbounded_face()->set_data({0, 0, true});
   for (std::size_t k = 0; k < queue.size(); ++k) {
     const auto f = queue[k];
     auto visit = [&](Arrangement::Ccb_halfedge_circulator first) {
       auto h = first;
       do {
         auto g = h->twin()->face();
-        if (!(g->data() & kVisited)) {
-          g->set_data(((f->data() ^ h->curve().data().parityBits()) & 7) | kVisited);
+        if (!g->data().visited) {
+          const Counts& counts = h->curve().data();
+          const bool leftToRight = h->direction() == CGAL::ARR_LEFT_TO_RIGHT;
+          g->set_data({(f->data().bits ^ counts.parityBits()) & 7,
+                       f->data().zones + (leftToRight ? -counts.z : counts.z), true});
           queue.push_back(g);
         }
       } while (++h != first);
@@ -84,27 +104,32 @@ void propagateParities(Arrangement& arr) {
 
 bool expectedInside(Op op, int bits) { return apply(op, bits & kS, bits & kC); }
 bool resultInside(int bits) { return bits & kR; }
+bool isWrong(Op op, Face f) { return expectedInside(op, f->data().bits) != resultInside(f->data().bits); }
 
-using Interval = CGAL::Interval_nt<false>;
+template <class F>
+void forEachCcb(Face f, F&& visit) {
+  for (auto ccb = f->outer_ccbs_begin(); ccb != f->outer_ccbs_end(); ++ccb) visit(*ccb);
+  for (auto ccb = f->inner_ccbs_begin(); ccb != f->inner_ccbs_end(); ++ccb) visit(*ccb);
+}
 
-// Certified interval enclosure of a bounded face's area from the vertices' interval
-// approximations, taken relative to one of its vertices: a sliver face then gets an interval
-// as small as itself, so its verdict rarely needs exact arithmetic.
+// The kernel's interval approximations (computed under its own rounding protection).
+Interval certified(const CGAL::Interval_nt<false>& i) { return Interval(i.inf(), i.sup()); }
+
+// Certified enclosure of a bounded face's area from the vertices' interval approximations,
+// taken relative to one of its vertices: a sliver face then gets an interval as small as itself.
 Interval faceAreaInterval(Face f) {
   Interval twice = 0;
   const auto& origin = CGAL::approx((*f->outer_ccbs_begin())->source()->point());
-  auto add = [&](Arrangement::Ccb_halfedge_const_circulator first) {
+  forEachCcb(f, [&](Arrangement::Ccb_halfedge_const_circulator first) {
     auto h = first;
     do {
       const auto& p = CGAL::approx(h->source()->point());
       const auto& q = CGAL::approx(h->target()->point());
-      const Interval px = p.x() - origin.x(), py = p.y() - origin.y();
-      const Interval qx = q.x() - origin.x(), qy = q.y() - origin.y();
+      const Interval px = certified(p.x()) - certified(origin.x()), py = certified(p.y()) - certified(origin.y());
+      const Interval qx = certified(q.x()) - certified(origin.x()), qy = certified(q.y()) - certified(origin.y());
       twice += px * qy - qx * py;
     } while (++h != first);
-  };
-  for (auto ccb = f->outer_ccbs_begin(); ccb != f->outer_ccbs_end(); ++ccb) add(*ccb);
-  for (auto ccb = f->inner_ccbs_begin(); ccb != f->inner_ccbs_end(); ++ccb) add(*ccb);
+  });
   return twice / 2;
 }
 
@@ -112,17 +137,29 @@ Interval faceAreaInterval(Face f) {
 // exact number type: lazy sums would build one large expression tree per face (5x slower).
 EFT faceArea(Face f) {
   EFT twice = 0;
-  auto add = [&](Arrangement::Ccb_halfedge_const_circulator first) {
+  forEachCcb(f, [&](Arrangement::Ccb_halfedge_const_circulator first) {
     auto h = first;
     do {
       const auto& p = CGAL::exact(h->source()->point());
       const auto& q = CGAL::exact(h->target()->point());
       twice += p.x() * q.y() - q.x() * p.y();
     } while (++h != first);
-  };
-  for (auto ccb = f->outer_ccbs_begin(); ccb != f->outer_ccbs_end(); ++ccb) add(*ccb);
-  for (auto ccb = f->inner_ccbs_begin(); ccb != f->inner_ccbs_end(); ++ccb) add(*ccb);
+  });
   return twice / 2;
+}
+
+CGAL::Bbox_2 faceBox(Face f) {
+  CGAL::Bbox_2 box;
+  bool first = true;
+  forEachCcb(f, [&](Arrangement::Ccb_halfedge_const_circulator start) {
+    auto h = start;
+    do {
+      const CGAL::Bbox_2 b = h->source()->point().bbox();
+      box = first ? b : box + b;
+      first = false;
+    } while (++h != start);
+  });
+  return box;
 }
 
 // A point strictly inside face f: on a vertical line between two vertex abscissae (so it meets
@@ -131,15 +168,13 @@ EFT faceArea(Face f) {
 KPoint pointInside(Face f) {
   std::vector<Halfedge> edges;
   std::vector<FT> xs;
-  auto collect = [&](Arrangement::Ccb_halfedge_const_circulator first) {
+  forEachCcb(f, [&](Arrangement::Ccb_halfedge_const_circulator first) {
     auto h = first;
     do {
       xs.push_back(h->source()->point().x());
       if (h->twin()->face() != f) edges.push_back(h);
     } while (++h != first);
-  };
-  for (auto ccb = f->outer_ccbs_begin(); ccb != f->outer_ccbs_end(); ++ccb) collect(*ccb);
-  for (auto ccb = f->inner_ccbs_begin(); ccb != f->inner_ccbs_end(); ++ccb) collect(*ccb);
+  });
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
   std::size_t widest = 0;
@@ -163,26 +198,38 @@ KPoint pointInside(Face f) {
   return KPoint(x0, (ys[best] + ys[best + 1]) / 2);
 }
 
+// The double nearest to an exact number (ties either way): a faithful rounding, which the
+// interval approximation's midpoint (CGAL::to_double of a lazy number) need not be.
+double nearestDouble(const FT& v) {
+  const auto& approx = CGAL::approx(v);
+  if (approx.is_point()) return approx.inf();
+  const EFT exact = CGAL::exact(v);
+  double d = CGAL::to_double(exact);
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  for (double next : {std::nextafter(d, -inf), std::nextafter(d, inf)}) {
+    if (std::isfinite(next) && CGAL::abs(EFT(next) - exact) < CGAL::abs(EFT(d) - exact)) d = next;
+  }
+  return d;
+}
+
 // The boundary of the union of faces where `in` holds, as rings with the region on the left:
 // from each boundary halfedge, turn around its target through inside faces to the next one.
 template <class In>
 Region boundaryRings(const Arrangement& arr, In in) {
   auto isBoundary = [&](Halfedge h) { return in(h->face()) && !in(h->twin()->face()); };
   Region rings;
-  std::vector<char> used;
   std::vector<Halfedge> all;
   for (auto h = arr.halfedges_begin(); h != arr.halfedges_end(); ++h) all.push_back(h);
   std::unordered_map<const void*, std::size_t> index;
   for (std::size_t i = 0; i < all.size(); ++i) index[&*all[i]] = i;
-  used.assign(all.size(), 0);
+  std::vector<char> used(all.size(), 0);
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (used[i] || !isBoundary(all[i])) continue;
     Ring ring;
     Halfedge h = all[i];
     do {
       used[index[&*h]] = 1;
-      const Point p{CGAL::to_double(h->source()->point().x()),
-                    CGAL::to_double(h->source()->point().y())};
+      const Point p{nearestDouble(h->source()->point().x()), nearestDouble(h->source()->point().y())};
       if (ring.empty() || ring.back() != p) ring.push_back(p);
       Halfedge next = h->next();
       while (!isBoundary(next)) next = next->twin()->next();
@@ -194,13 +241,17 @@ Region boundaryRings(const Arrangement& arr, In in) {
   return rings;
 }
 
-void build(const Region& s, const Region& c, const Region& r, Arrangement& arr) {
-  std::vector<Traits::Curve_2> curves;
-  addSegments(normalized(s, OnBadRing::Drop), {1, 0, 0}, curves);
-  addSegments(normalized(c, OnBadRing::Drop), {0, 1, 0}, curves);
-  addSegments(normalized(r, OnBadRing::Drop), {0, 0, 1}, curves);
+void build(const std::vector<Traits::Curve_2>& curves, Arrangement& arr) {
   CGAL::insert(arr, curves.begin(), curves.end());
-  propagateParities(arr);
+  propagate(arr);
+}
+
+std::vector<Traits::Curve_2> operandCurves(const Region& s, const Region& c, const Region& r) {
+  std::vector<Traits::Curve_2> curves;
+  addSegments(normalized(s, OnBadRing::Drop), {1, 0, 0, 0}, curves);
+  addSegments(normalized(c, OnBadRing::Drop), {0, 1, 0, 0}, curves);
+  addSegments(normalized(r, OnBadRing::Drop), {0, 0, 1, 0}, curves);
+  return curves;
 }
 
 std::string rationalText(const EFT& v) {
@@ -209,83 +260,207 @@ std::string rationalText(const EFT& v) {
   return s.str();
 }
 
-}  // namespace
+// ---------------------------------------------------------------------------------------------
+// Rounding zones (see exact_oracle.h).
 
-namespace {
+EFT powerOfTwo(int e) {
+  EFT p = 1;
+  const EFT factor = e > 0 ? EFT(2) : EFT(0.5);
+  for (int i = 0; i < std::abs(e); ++i) p *= factor;
+  return p;
+}
+
+// The doubles a coordinate may round to: [lo, hi] with lo the largest double <= v and hi the
+// smallest >= v (equal when v is a double), widened by ulps - 1 doubles on each side. Computed
+// at the original scale (v * 2^-k: the judge works on a copy scaled by 2^k), returned scaled.
+std::pair<double, double> roundingInterval(const FT& v, int k, int ulps) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const auto& approx = CGAL::approx(v);
+  double lo, hi;
+  if (approx.is_point() && k == 0) {
+    lo = hi = approx.inf();
+  } else {
+    EFT exact = CGAL::exact(v);
+    if (k != 0) exact *= powerOfTwo(-k);
+    lo = CGAL::to_double(exact);
+    while (EFT(lo) > exact) lo = std::nextafter(lo, -inf);
+    while (EFT(std::nextafter(lo, inf)) <= exact) lo = std::nextafter(lo, inf);
+    hi = EFT(lo) == exact ? lo : std::nextafter(lo, inf);
+  }
+  for (int i = 1; i < ulps; ++i) lo = std::nextafter(lo, -inf), hi = std::nextafter(hi, inf);
+  lo = std::max(lo, std::numeric_limits<double>::lowest());
+  hi = std::min(hi, std::numeric_limits<double>::max());
+  if (k == 0) return {lo, hi};
+  // Back to the judging scale, rounded outward (exact unless the scaled value is subnormal).
+  double slo = std::ldexp(lo, k), shi = std::ldexp(hi, k);
+  if (std::ldexp(slo, -k) > lo) slo = std::nextafter(slo, -inf);
+  if (std::ldexp(shi, -k) < hi) shi = std::nextafter(shi, inf);
+  return {slo, shi};
+}
+
+struct RoundingBox {
+  double x0, x1, y0, y1;
+  bool isPoint() const { return x0 == x1 && y0 == y1; }
+};
+
+RoundingBox roundingBox(const KPoint& p, int k, int ulps) {
+  const auto [x0, x1] = roundingInterval(p.x(), k, ulps);
+  const auto [y0, y1] = roundingInterval(p.y(), k, ulps);
+  return {x0, x1, y0, y1};
+}
+
+// The straight lines of S and C: maximal chains of arrangement edges on S or C that go on along
+// one line through each vertex. A candidate's edges run along these lines between (rounded)
+// vertices of the arrangement of S and C, and may skip any of them (a ring passing straight
+// through a crossing, as Greiner-Hormann's rings pass through the operands' self-crossings, or a
+// peer dropping a collinear vertex), so a line's zone is the convex hull of the rounding boxes of
+// all vertices on it. Every line counts, not only the exact answer's boundary: where two rings of
+// a candidate run along one operand edge in opposite directions, one through a rounded crossing
+// and one straight past it, the sliver between them is rounding although the exact answer has no
+// boundary there. Vertices that only R or R's crossings make are not vertices of S and C: they
+// add nothing.
+class OperandLines {
+ public:
+  explicit OperandLines(const Arrangement& arr, const std::unordered_set<Point, PointHash>& inputVertices)
+      : inputVertices_(inputVertices) {
+    std::unordered_set<const void*> done;
+    for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+      const Halfedge h = e;
+      if (!onOperands(h) || done.count(&*h)) continue;
+      std::vector<Vertex> run;
+      done.insert(&*h), done.insert(&*h->twin());
+      follow(h, run, done);
+      follow(h->twin(), run, done);
+      runs_.push_back(std::move(run));
+    }
+  }
+  // Each run: the vertices of the arrangement of S and C on it (at least its two ends).
+  const std::vector<std::vector<Vertex>>& runs() const { return runs_; }
+
+ private:
+  static bool onOperands(Halfedge h) { return h->curve().data().onOperands(); }
+  // A vertex of the arrangement of S and C: an input vertex, or where operand segments cross
+  // (anything but exactly two operand pieces, which then continue one segment straight on).
+  bool isOperandVertex(Vertex v) {
+    const auto found = operandVertex_.find(&*v);
+    if (found != operandVertex_.end()) return found->second;
+    bool result;
+    const auto& a = CGAL::approx(v->point());
+    if (a.x().is_point() && a.y().is_point() && inputVertices_.count(Point{a.x().inf(), a.y().inf()})) {
+      result = true;
+    } else {
+      int pieces = 0;
+      auto h = v->incident_halfedges();
+      const auto first = h;
+      do pieces += h->curve().data().onOperands();
+      while (++h != first);
+      result = pieces != 2;
+    }
+    operandVertex_.emplace(&*v, result);
+    return result;
+  }
+  // From h's target on: every boundary edge that continues h's line, collecting the operand
+  // vertices passed.
+  void follow(Halfedge h, std::vector<Vertex>& run, std::unordered_set<const void*>& done) {
+    const auto collinear = Kernel().collinear_2_object();
+    // (Its precondition: the three points are collinear.)
+    const auto strictlyOrdered = Kernel().collinear_are_strictly_ordered_along_line_2_object();
+    for (;;) {
+      const Vertex v = h->target();
+      if (isOperandVertex(v)) run.push_back(v);
+      auto around = v->incident_halfedges();
+      const auto first = around;
+      std::optional<Halfedge> next;
+      do {
+        const Halfedge out = around->twin();  // leaves v
+        if (around != h && onOperands(out) && !done.count(&*out) &&
+            collinear(h->source()->point(), v->point(), out->target()->point()) &&
+            strictlyOrdered(h->source()->point(), v->point(), out->target()->point())) {
+          next = out;
+        }
+      } while (++around != first);
+      if (!next) return;
+      h = *next;
+      done.insert(&*h), done.insert(&*h->twin());
+    }
+  }
+
+  const std::unordered_set<Point, PointHash>& inputVertices_;
+  std::unordered_map<const void*, bool> operandVertex_;
+  std::vector<std::vector<Vertex>> runs_;
+};
+
+using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
+
+// The rounding zones that meet some wrong face: for each straight line of S and C with a vertex
+// that is not a double, the convex hull of its vertices' rounding boxes, as edges for the
+// arrangement. Returns how many zones.
+std::size_t addRoundingZones(const Arrangement& arr, const std::vector<Face>& wrongFaces,
+                             const std::unordered_set<Point, PointHash>& inputVertices, int k, int ulps,
+                             std::vector<Traits::Curve_2>& curves) {
+  const OperandLines lines(arr, inputVertices);
+  std::vector<Box> wrongBoxes, pieceBoxes;
+  for (std::size_t i = 0; i < wrongFaces.size(); ++i) wrongBoxes.emplace_back(faceBox(wrongFaces[i]), i);
+  for (std::size_t i = 0; i < lines.runs().size(); ++i) {
+    const auto& run = lines.runs()[i];
+    CGAL::Bbox_2 box = run.front()->point().bbox();
+    for (const Vertex& v : run) box += v->point().bbox();
+    // Room for the rounding boxes, generously (the exact boxes are computed for the survivors).
+    const double margin = std::ldexp(std::max({std::abs(box.xmin()), std::abs(box.xmax()),
+                                               std::abs(box.ymin()), std::abs(box.ymax())}),
+                                     -48 + ulps) +
+                          std::ldexp(std::numeric_limits<double>::denorm_min(), ulps + 2 + std::max(k, 0));
+    box = CGAL::Bbox_2(box.xmin() - margin, box.ymin() - margin, box.xmax() + margin, box.ymax() + margin);
+    pieceBoxes.emplace_back(box, i);
+  }
+  std::vector<char> near(lines.runs().size(), 0);
+  CGAL::box_intersection_d(wrongBoxes.begin(), wrongBoxes.end(), pieceBoxes.begin(), pieceBoxes.end(),
+                           [&](const Box&, const Box& piece) { near[piece.info()] = 1; });
+  using HullKernel = CGAL::Exact_predicates_inexact_constructions_kernel;  // exact predicates
+  std::size_t zones = 0;
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    if (!near[i]) continue;
+    std::vector<HullKernel::Point_2> corners;
+    bool anyBox = false;
+    for (const Vertex& v : lines.runs()[i]) {
+      const RoundingBox r = roundingBox(v->point(), k, ulps);
+      anyBox |= !r.isPoint();
+      for (double x : {r.x0, r.x1}) {
+        for (double y : {r.y0, r.y1}) corners.emplace_back(x, y);
+      }
+    }
+    if (!anyBox) continue;
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    std::vector<HullKernel::Point_2> hull;
+    CGAL::convex_hull_2(corners.begin(), corners.end(), std::back_inserter(hull));  // counter-clockwise
+    if (hull.size() < 3) continue;
+    ++zones;
+    for (std::size_t j = 0; j < hull.size(); ++j) {
+      const auto& p = hull[j];
+      const auto& q = hull[(j + 1) % hull.size()];
+      const int side = p < q ? 1 : -1;  // the zone lies to the left of p -> q
+      curves.emplace_back(SegmentTraits::Curve_2(KPoint(p.x(), p.y()), KPoint(q.x(), q.y())),
+                          Counts{0, 0, 0, side});
+    }
+  }
+  return zones;
+}
+
+// ---------------------------------------------------------------------------------------------
 
 // errorArea relative to the problem's size (see exact_oracle.h); scale-free, so it is computed
 // on the scaled problem, where no area underflows.
-double relativeErrorOf(const ExactVerdict& v) {
+double problemScale(const ExactVerdict& v) {
   double scale = std::max({v.subjectArea, v.clipArea, v.expectedArea, v.resultArea});
   // Operands of zero area (collinear rings) leave no area to compare with: then the size of the
   // problem is its bounding box.
   if (scale <= v.boxArea * 0x1p-40) scale = v.boxArea;
-  return scale > 0 ? v.errorArea / scale : (v.errorArea > 0 ? 1.0 : 0.0);
+  return scale;
 }
+double relativeTo(double scale, double area) { return scale > 0 ? area / scale : (area > 0 ? 1.0 : 0.0); }
 
-// The tolerance for the exact answer's own constructed vertices: each end of a boundary edge of
-// op(S, C) that is not an input vertex may move by `displacement` when rounded.
-double answerTolerance(const Arrangement& arr, Op op, const Region& subject, const Region& clip, double displacement) {
-  std::set<std::pair<double, double>> inputVertices;
-  for (const Region* r : {&subject, &clip}) {
-    for (const Ring& ring : *r) {
-      for (const Point& p : ring) inputVertices.insert({p.x, p.y});
-    }
-  }
-  auto constructed = [&](Arrangement::Vertex_const_handle v) {
-    const auto& a = CGAL::approx(v->point());
-    if (!a.x().is_point() || !a.y().is_point()) return true;
-    return !inputVertices.count({a.x().inf(), a.y().inf()});
-  };
-  double tolerance = 0;
-  for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
-    if (expectedInside(op, e->face()->data()) == expectedInside(op, e->twin()->face()->data())) continue;
-    const int ends = constructed(e->source()) + constructed(e->target());
-    if (ends == 0) continue;
-    const auto& a = CGAL::approx(e->source()->point());
-    const auto& b = CGAL::approx(e->target()->point());
-    const double length = std::hypot(CGAL::to_double(b.x() - a.x()), CGAL::to_double(b.y() - a.y()));
-    tolerance += displacement * length / 2 * ends;
-  }
-  return tolerance;
-}
-
-// The judgement proper, on a problem already at a comfortable scale: coordinates were multiplied
-// by 2^k (areas by 4^k) and `displacement` is the original's, scaled alike.
-ExactVerdict judge(const Region& subject, const Region& clip, Op op, const Region& result,
-                   const ExactOptions& options, double displacement, int k) {
-  const auto start = std::chrono::steady_clock::now();
-  Arrangement arr;
-  build(subject, clip, result, arr);
-
-  ExactVerdict v;
-  // Expected and result areas: interval sums (exact evaluation of every intersection vertex
-  // costs 5-10x more). The error area, which decides the verdict, is summed exactly.
-  Interval expected = 0, got = 0, error = 0, areaS = 0, areaC = 0;
-  double worst = -1;
-  Face worstFace;
-  std::vector<Face> wrongFaces;
-  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-    if (f->is_unbounded()) continue;  // outside everything: op(0, 0) = 0 for every op
-    const int bits = f->data();
-    const bool want = expectedInside(op, bits), have = resultInside(bits);
-    if (!want && !have && !(bits & (kS | kC))) continue;
-    const auto approxArea = faceAreaInterval(f);
-    if (bits & kS) areaS += approxArea;
-    if (bits & kC) areaC += approxArea;
-    if (want) expected += approxArea;
-    if (have) got += approxArea;
-    if (want != have) {
-      error += approxArea;
-      wrongFaces.push_back(f);
-      if (CGAL::to_double(approxArea) > worst) worst = CGAL::to_double(approxArea), worstFace = f;
-    }
-  }
-  const bool anyWrong = !wrongFaces.empty();
-  v.expectedArea = CGAL::to_double(expected);
-  v.resultArea = CGAL::to_double(got);
-  v.subjectArea = CGAL::to_double(areaS);
-  v.clipArea = CGAL::to_double(areaC);
+double boxAreaOf(const Region& subject, const Region& clip) {
   double minX = 0, minY = 0, maxX = 0, maxY = 0;
   bool any = false;
   for (const Region* r : {&subject, &clip}) {
@@ -296,73 +471,177 @@ ExactVerdict judge(const Region& subject, const Region& clip, Op op, const Regio
       }
     }
   }
-  v.boxArea = (maxX / 2 - minX / 2) * (maxY / 2 - minY / 2) * 4;
+  return (maxX / 2 - minX / 2) * (maxY / 2 - minY / 2) * 4;  // halves: no overflow near 1e308
+}
+
+// The judgement proper, on a problem already at a comfortable scale: coordinates were multiplied
+// by 2^k (areas by 4^k).
+ExactVerdict judge(const Region& subject, const Region& clip, Op op, const Region& result,
+                   const ExactOptions& options, int k) {
+  const auto start = std::chrono::steady_clock::now();
+  Arrangement arr;
+  build(operandCurves(subject, clip, result), arr);
+
+  ExactVerdict v;
+  Interval expected = 0, got = 0, areaS = 0, areaC = 0;
+  std::vector<Face> wrongFaces;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (f->is_unbounded()) continue;  // outside everything: op(0, 0) = 0 for every op
+    const int bits = f->data().bits;
+    const bool want = expectedInside(op, bits), have = resultInside(bits);
+    if (!want && !have && !(bits & (kS | kC))) continue;
+    const Interval area = faceAreaInterval(f);
+    if (bits & kS) areaS += area;
+    if (bits & kC) areaC += area;
+    if (want) expected += area;
+    if (have) got += area;
+    if (want != have) wrongFaces.push_back(f);
+  }
+  v.expectedArea = CGAL::to_double(expected);
+  v.resultArea = CGAL::to_double(got);
+  v.subjectArea = CGAL::to_double(areaS);
+  v.clipArea = CGAL::to_double(areaC);
+  v.boxArea = boxAreaOf(subject, clip);
   v.areaUncertainty = std::max(expected.sup() - expected.inf(), got.sup() - got.inf());
-  v.errorArea = CGAL::to_double(error);
-  v.tolerance = roundingTolerance(subject, clip, result, displacement) +
-                answerTolerance(arr, op, subject, clip, displacement);
-  // The verdict is certified: by the interval when it lies on one side of the tolerance,
-  // else by the exact sum.
-  const bool undecided = error.inf() <= v.tolerance && v.tolerance < error.sup();
-  if (undecided || options.exactErrorArea) {
-    EFT exact = 0;
-    for (Face f : wrongFaces) exact += faceArea(f);
-    v.errorArea = CGAL::to_double(exact);
-    EFT original = exact;
-    const EFT factor = k > 0 ? EFT(0.5) : EFT(2);
-    for (int i = 0; i < 2 * std::abs(k); ++i) original *= factor;
-    v.errorAreaExact = rationalText(original);
-    v.pass = exact <= EFT(v.tolerance);
-  } else {
-    v.pass = error.sup() <= v.tolerance;
-  }
-  if (anyWrong) {
-    const KPoint w = pointInside(worstFace);
-    v.witness = Point{CGAL::to_double(w.x()), CGAL::to_double(w.y())};
-  }
-  if (options.wantExpectedRings) {
-    v.expected = boundaryRings(arr, [op](Face f) { return expectedInside(op, f->data()); });
-  }
-  if (options.wantWrongRings && anyWrong) {
-    v.wrong = boundaryRings(arr, [op](Face f) {
-      return expectedInside(op, f->data()) != resultInside(f->data());
-    });
-  }
   v.faces = arr.number_of_faces();
   v.vertices = arr.number_of_vertices();
   v.edges = arr.number_of_edges();
-  v.relative = relativeErrorOf(v);
+
+  // Wrong faces, split by the rounding zones when there are any to excuse them.
+  Arrangement zoned;
+  std::vector<Face> rounding, beyond;
+  if (!wrongFaces.empty()) {
+    std::unordered_set<Point, PointHash> inputVertices;
+    for (const Region* r : {&subject, &clip}) {
+      for (const Ring& ring : *r) inputVertices.insert(ring.begin(), ring.end());
+    }
+    // The second arrangement holds only the wrong region's boundary (its R parity bit then
+    // marks the wrong region) and the zones: far smaller than S, C and R again.
+    std::vector<Traits::Curve_2> curves;
+    for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+      if (isWrong(op, e->face()) == isWrong(op, e->twin()->face())) continue;
+      const SegmentTraits::X_monotone_curve_2& piece = e->curve();
+      curves.emplace_back(piece, Counts{0, 0, 1, 0});
+    }
+    v.zones = addRoundingZones(arr, wrongFaces, inputVertices, k, options.constructionUlps, curves);
+    if (v.zones == 0) {
+      beyond = wrongFaces;
+    } else {
+      build(curves, zoned);
+      for (auto f = zoned.faces_begin(); f != zoned.faces_end(); ++f) {
+        if (f->is_unbounded() || !resultInside(f->data().bits)) continue;
+        (f->data().zones > 0 ? rounding : beyond).push_back(f);
+      }
+    }
+  }
+  v.pass = beyond.empty();
+
+  Interval error = 0, beyondError = 0;
+  double largest = -1;
+  std::optional<Face> witnessFace;
+  for (const auto* faces : {&beyond, &rounding}) {
+    for (Face f : *faces) {
+      const Interval area = faceAreaInterval(f);
+      error += area;
+      if (faces == &beyond) beyondError += area;
+      // The witness lies in the largest face beyond rounding, or in the largest rounding face.
+      if ((faces == &beyond || beyond.empty()) && CGAL::to_double(area) > largest) {
+        largest = CGAL::to_double(area), witnessFace = f;
+      }
+    }
+  }
+  v.errorArea = CGAL::to_double(error);
+  v.beyondRoundingArea = CGAL::to_double(beyondError);
+  if (options.exactErrorArea) {
+    const EFT toOriginal = powerOfTwo(-2 * k);
+    EFT beyondExact = 0, roundingExact = 0;
+    for (Face f : beyond) beyondExact += faceArea(f);
+    for (Face f : rounding) roundingExact += faceArea(f);
+    v.errorArea = CGAL::to_double(beyondExact + roundingExact);
+    v.beyondRoundingArea = CGAL::to_double(beyondExact);
+    v.errorAreaExact = rationalText((beyondExact + roundingExact) * toOriginal);
+    v.beyondRoundingAreaExact = rationalText(beyondExact * toOriginal);
+  }
+  if (witnessFace) {
+    const KPoint w = pointInside(*witnessFace);
+    v.witness = Point{CGAL::to_double(w.x()), CGAL::to_double(w.y())};
+  }
+  if (options.wantExpectedRings) {
+    v.expected = boundaryRings(arr, [op](Face f) { return expectedInside(op, f->data().bits); });
+  }
+  if (options.wantWrongRings && !wrongFaces.empty()) {
+    v.wrong = boundaryRings(arr, [op](Face f) { return isWrong(op, f); });
+  }
+  const double scale = problemScale(v);
+  v.relative = relativeTo(scale, v.errorArea);
+  v.relativeBeyond = relativeTo(scale, v.beyondRoundingArea);
   v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return v;
+}
+
+// Everything the arrangement code may throw becomes CannotJudge (with CGAL's checks compiled in,
+// see CMakeLists.txt, a violated precondition throws instead of crashing later).
+template <class F>
+auto judging(F&& f) {
+  try {
+    return f();
+  } catch (const InvalidInput&) {
+    throw;
+  } catch (const CannotJudge&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw CannotJudge("out of memory building the arrangement");
+  } catch (const std::exception& e) {
+    throw CannotJudge(std::string("the arrangement failed: ") + e.what());
+  }
 }
 
 }  // namespace
 
 double ExactVerdict::relativeError() const { return relative; }
 
+double ExactVerdict::relativeBeyondRounding() const { return relativeBeyond; }
+
 ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const Region& result,
                         const ExactOptions& options) {
-  const double displacement = constructionDisplacement(subject, clip, result);
-  const int k = judgingExponent(subject, clip, result);
-  if (k == 0) return judge(subject, clip, op, result, options, displacement, 0);
-  ExactVerdict v = judge(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), options,
-                         std::ldexp(displacement, k), k);
-  // Back to the original scale (areas may underflow to 0 or overflow there; the relative error
-  // and the verdict were decided at the comfortable scale).
-  for (double* area : {&v.expectedArea, &v.resultArea, &v.subjectArea, &v.clipArea, &v.boxArea,
-                       &v.areaUncertainty, &v.errorArea, &v.tolerance}) {
-    *area = std::ldexp(*area, -2 * k);
-  }
-  if (v.witness) v.witness = scaledBy(*v.witness, -k);
-  v.expected = scaledBy(v.expected, -k);
-  v.wrong = scaledBy(v.wrong, -k);
-  return v;
+  if (options.constructionUlps < 1) throw std::invalid_argument("constructionUlps must be at least 1");
+  return judging([&] {
+    const int k = judgingExponent(subject, clip, result);
+    if (k == 0) return judge(subject, clip, op, result, options, 0);
+    ExactVerdict v = judge(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), options, k);
+    // Back to the original scale (areas may underflow to 0 or overflow there; the relative error
+    // and the verdict were decided at the comfortable scale).
+    for (double* area : {&v.expectedArea, &v.resultArea, &v.subjectArea, &v.clipArea, &v.boxArea,
+                         &v.areaUncertainty, &v.errorArea, &v.beyondRoundingArea}) {
+      *area = std::ldexp(*area, -2 * k);
+    }
+    if (v.witness) v.witness = scaledBy(*v.witness, -k);
+    v.expected = scaledBy(v.expected, -k);
+    v.wrong = scaledBy(v.wrong, -k);
+    return v;
+  });
 }
 
 Region exactAnswer(const Region& subject, const Region& clip, Op op) {
-  Arrangement arr;
-  build(subject, clip, {}, arr);
-  return boundaryRings(arr, [op](Face f) { return expectedInside(op, f->data()); });
+  return judging([&] {
+    Arrangement arr;
+    build(operandCurves(subject, clip, {}), arr);
+    return boundaryRings(arr, [op](Face f) { return expectedInside(op, f->data().bits); });
+  });
 }
+
+ExactArea exactArea(const Region& region) {
+  return judging([&] {
+    Arrangement arr;
+    build(operandCurves(region, {}, {}), arr);
+    EFT total = 0;
+    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+      if (!f->is_unbounded() && (f->data().bits & kS)) total += faceArea(f);
+    }
+    return ExactArea{rationalText(total), CGAL::to_double(total)};
+  });
+}
+
+bool sameExactArea(const Region& a, const Region& b) { return exactArea(a).rational == exactArea(b).rational; }
 
 }  // namespace gh::oracle

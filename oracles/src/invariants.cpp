@@ -30,15 +30,13 @@ double measurementError(const Region& a, const Region& b, const Region& c) {
   return 16 * 0x1p-53 * edges * (maxX - minX) * maxY + 16 * edges * edges * std::numeric_limits<double>::denorm_min();
 }
 
-// The area inequalities of op, on a problem at a comfortable scale; displacement is the original
-// problem's rounding resolution at this scale.
-void areaViolations(const Region& S, const Region& C, Op op, const Region& R, double displacement,
-                    std::vector<std::string>& out) {
+// The area inequalities of op, on a problem at a comfortable scale.
+void areaViolations(const Region& S, const Region& C, Op op, const Region& R, int k, std::vector<std::string>& out) {
   const double a = evenOddArea(S), b = evenOddArea(C), r = evenOddArea(R);
-  // Slack: the rounding tolerance (with the original's resolution), the measurement's own error
+  // Slack: the rounding allowance of R's constructed vertices (tolerance.h), the measurement's own error
   // (each slab trapezoid is measured with a few roundings of heights up to the largest |y|, and
   // results below the normal range lose absolute precision), and a relative 1e-9 of the areas.
-  const double slack = roundingTolerance(S, C, R, displacement) + measurementError(S, C, R) + 1e-9 * (a + b + r);
+  const double slack = roundingAllowance(S, C, R, kComparisonUlps, std::ldexp(std::numeric_limits<double>::denorm_min(), std::max(k, 0))) + measurementError(S, C, R) + 1e-9 * (a + b + r);
   auto require = [&](bool ok, const char* what) {
     if (ok) return;
     std::ostringstream s;
@@ -88,12 +86,11 @@ std::vector<std::string> invariantViolations(const Region& subject, const Region
   }
   // Areas are measured on a copy at a comfortable scale (judging_scale.h): at subnormal or
   // 1e300 magnitudes the floating-point measurement itself would under- or overflow.
-  const double displacement = constructionDisplacement(subject, clip, result);
   const int k = judgingExponent(subject, clip, result);
   if (k == 0) {
-    areaViolations(subject, clip, op, result, displacement, out);
+    areaViolations(subject, clip, op, result, 0, out);
   } else {
-    areaViolations(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), std::ldexp(displacement, k), out);
+    areaViolations(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), k, out);
   }
   return out;
 }

@@ -1,11 +1,21 @@
 // The sampling oracle: cheap, CGAL-free, good enough to call inside a fuzzer.
 //
 // Points are drawn (seeded) uniformly in the joint bounding box of S, C and R, and around every
-// vertex of S, C and R at radii extent * 2^-8, 2^-14, 2^-20, 2^-26 in eight directions (points
-// near vertices catch moved vertices and slivers that uniform points miss). Each point gets
-// three even-odd crossing tests; a point within delta = extent * 2^-32 + M * 2^-44 of any edge of
-// S, C or R (M the largest |coordinate|, about 100 ulps of it) is skipped, since there a correct
-// answer's rounding, or the tests' own, may legitimately disagree.
+// vertex of S, C and R in eight directions plus both ways along the corner's bisector, at radii
+// both global (extent * 2^-8, 2^-14, 2^-20, 2^-26) and local (the vertex's shorter edge times
+// 2^-2, 2^-5, 2^-10, 2^-20), so that a small feature next to a large one, or a thin spike, is
+// sampled at its own size. Each point gets three exact even-odd tests (filtered orientation,
+// GMP when the filter cannot decide).
+//
+// Where a correct answer may legitimately disagree: within the rounding zones (exact_oracle.h),
+// which lie along the lines of S and C. A point is skipped when it is within
+// delta = (2 * constructionUlps + 6) ulps of the magnitude of an edge's largest crossing of that
+// edge of S or C; points exactly on an edge of R are skipped too. So a unit square crossed by a
+// 1e15-long edge is judged at the unit square's resolution. Where it is still blind: a wrong
+// feature thinner than that delta lying along an edge of S or C (wider than the exact oracle's
+// zone where one edge has crossings of very different magnitudes: the delta is the largest
+// one's), and any feature no sample lands in (the samples near vertices find small features at
+// vertices, not in the middle of long edges). The exact oracle has neither blind spot.
 #pragma once
 
 #include <cstdint>
@@ -20,19 +30,19 @@ struct SampleOptions {
   std::uint64_t seed = 1;
   std::size_t uniformPoints = 2000;
   bool nearVertices = true;
+  int constructionUlps = 1;  // as in ExactOptions
 };
 
 struct SampleVerdict {
   std::size_t checked = 0;     // points tested
-  std::size_t skipped = 0;     // within delta of an edge
+  std::size_t skipped = 0;     // within an edge's delta of an edge of S or C, or on an edge of R
   std::size_t mismatched = 0;  // inside(R) != op(inside(S), inside(C))
   std::optional<Point> firstMismatch;
-  double delta = 0;
+  double delta = 0;            // the largest local delta met (most are far smaller)
   double seconds = 0;
   bool pass() const { return mismatched == 0; }
 };
 
-// Even-odd crossing parity and distance to the nearest edge, in one pass over the edges.
 SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, const Region& result,
                           const SampleOptions& options = {});
 

@@ -1,29 +1,30 @@
-// How much error area a correct double-precision answer may have.
+// How much two correct double answers' areas may differ: for checks that compare areas (the
+// metamorphic properties, the differential fuzz target), not for the exact oracle, whose verdict
+// is topological (exact_oracle.h).
 //
-// A correct result differs from the exact answer only in its constructed points: every vertex of
-// R that is not a vertex of S or C is an intersection point rounded to doubles. A correctly
-// rounded point is within half an ulp per coordinate; we allow kConstructionUlps ulps of the
-// largest coordinate M per coordinate, i.e. a displacement |d| <= kConstructionUlps * ulp(M) * sqrt 2.
-// Moving a vertex v by d changes the region by at most the two triangles its edges sweep:
-// |d| * (|e_prev| + |e_next|) / 2. The tolerance is the sum of that bound over the constructed
-// vertices of R (and, in the exact oracle, of the exact answer too: rounding may flatten a ring of
-// constructed points to nothing, which then has no vertex in R). Vertices equal to input
-// vertices get nothing, so a moved input vertex, a dropped
-// ring or a confused operation is never within tolerance unless its area is below rounding.
+// A correct answer differs from the exact one only in its constructed vertices (those that are not
+// vertices of S or C). Each is off its exact crossing by at most `ulps` ulps of its *own*
+// coordinates, a displacement |d| <= ulps * ulp(max(|x|, |y|)) * sqrt 2; moving a vertex v by d
+// changes the area by at most the two triangles its edges sweep, |d| * (|e_prev| + |e_next|) / 2.
+// The allowance is the sum of that over the constructed vertices of R. Input vertices get
+// nothing, and a vertex near the origin gets an allowance of its own magnitude, however large
+// the rest of the problem.
 #pragma once
+
+#include <limits>
 
 #include "ghclip/region.h"
 
 namespace gh::oracle {
 
-inline constexpr double kConstructionUlps = 4;
+// The exact variant rounds each crossing faithfully (1 ulp); the paper's arithmetic computes it
+// in a few roundings. Area comparisons allow this many.
+inline constexpr int kComparisonUlps = 4;
 
-double roundingTolerance(const Region& subject, const Region& clip, const Region& result);
-
-// The parts: the allowed displacement of one constructed point, kConstructionUlps * ulp(M) * sqrt 2,
-// and the tolerance for a given displacement (judges working on a scaled copy of the problem
-// scale the original's displacement with it).
-double constructionDisplacement(const Region& subject, const Region& clip, const Region& result);
-double roundingTolerance(const Region& subject, const Region& clip, const Region& result, double displacement);
+// ulpFloor: the smallest ulp, denorm_min at the original scale; a caller measuring a copy scaled
+// by 2^k (judging_scale.h) passes denorm_min * 2^k, the original's subnormal spacing there.
+double roundingAllowance(const Region& subject, const Region& clip, const Region& result,
+                         int ulps = kComparisonUlps,
+                         double ulpFloor = std::numeric_limits<double>::denorm_min());
 
 }  // namespace gh::oracle
