@@ -99,7 +99,7 @@ int run(int argc, char** argv) {
   md << "# The exact variant on degenerate input\n\n" << experiments::markdown(experiments::provenance(argc, argv))
      << "\n" << perFamily << " cases per family (seeds 1.." << perFamily << "), each with all five operations, "
      << "clipped by `exact` and by `naive`, every answer judged by the exact oracle (bitset-grid answers "
-     << "against the bitwise answer). *fail* = error area above the rounding tolerance (or a ClipFailure); "
+     << "against the bitwise answer). *fail* = a wrong face outside the rounding zones (or a ClipFailure); "
      << "*error 0* = error area exactly zero.\n\n"
      << "| family | checks | exact: fail | exact: error 0 | exact: filter failures per candidate pair | "
         "naive: fail | naive: ClipFailure | naive: error 0 | naive: worst relative error |\n"

@@ -88,10 +88,12 @@ int run(int argc, char** argv) {
   md << "\nGEOS, Boost.Geometry and CGAL accept only valid simple polygons with holes: inputs "
         "without an exact OGC form (self-intersections, touching rings) are refused before they "
         "see them, and counted as refused. Clipper 6.4.2 and our variants take every input.\n\n"
-     << "Outcomes: **exact** (error area 0), **rounding-level** (0 < error area <= the rounding "
-        "tolerance of the constructed points), **beyond rounding** (above it, relative error "
-        "<= 1e-6), **gross** (relative error > 1e-6), **refused**, **failed** (threw). Relative "
-        "error = error area / largest of the operand, expected and result areas.\n\n";
+     << "Outcomes: **exact** (error area 0), **rounding-level** (every wrong face inside the rounding "
+        "zones of the exact answer: each constructed vertex may be either double around its exact "
+        "crossing), **beyond rounding** (a wrong face outside them, relative error <= 1e-6), "
+        "**gross** (relative error > 1e-6), **refused**, **failed** (threw), **cannot judge** (the "
+        "oracle could not decide). Relative error = error area / largest of the operand, expected "
+        "and result areas.\n\n";
   for (const Workload& w : kWorkloads) {
     md << "## " << w.name << "\n\n| method |";
     for (Outcome o : kOutcomes) md << " " << outcomeName(o) << " |";
@@ -133,7 +135,8 @@ int run(int argc, char** argv) {
     if (f.j.outcome == Outcome::Failed) {
       md << " (" << f.j.message << ")";
     } else {
-      md << ", error area " << v.errorArea << " (relative " << v.relativeError() << ", tolerance " << v.tolerance << ")";
+      md << ", error area " << v.errorArea << " (relative " << v.relativeError() << "; outside the rounding zones "
+         << v.beyondRoundingArea << ")";
     }
     md << ". [" << id << ".wkt](" << base << ".wkt)\n\n![" << id << "](" << base << ".svg)\n\n";
   }

@@ -60,11 +60,15 @@ const InputClass kClasses[] = {
     {"grid+huge", 3, 12, false, "the grid class scaled to coordinates near 2^497"},
     {"simple+far", 5, 30, true, "the simple class moved by (1e9, 1e9)"},
     {"grid+far", 3, 12, false, "the grid class moved by (1e9, 1e9)"},
+    {"mixed-magnitude", 5, 30, true,
+     "a triangle of size 2^10..2^480 with an edge through the origin, holding a star hole of size "
+     "2^-300..1 above it, against a star of the hole's size crossing both"},
 };
 
-enum class Verdict { Exact, Rounding, Beyond, Gross, Refused, Threw, Crashed, TimedOut };
-constexpr Verdict kVerdicts[] = {Verdict::Exact,   Verdict::Rounding, Verdict::Beyond,  Verdict::Gross,
-                                 Verdict::Refused, Verdict::Threw,    Verdict::Crashed, Verdict::TimedOut};
+enum class Verdict { Exact, Rounding, Beyond, Gross, Refused, Threw, Crashed, TimedOut, Unjudged };
+constexpr Verdict kVerdicts[] = {Verdict::Exact,   Verdict::Rounding, Verdict::Beyond,   Verdict::Gross,
+                                 Verdict::Refused, Verdict::Threw,    Verdict::Crashed,  Verdict::TimedOut,
+                                 Verdict::Unjudged};
 const char* key(Verdict v) {
   switch (v) {
     case Verdict::Exact: return "exact";
@@ -75,6 +79,7 @@ const char* key(Verdict v) {
     case Verdict::Threw: return "threw";
     case Verdict::Crashed: return "crashed";
     case Verdict::TimedOut: return "timed-out";
+    case Verdict::Unjudged: return "cannot-judge";
   }
   return "?";
 }
@@ -87,10 +92,13 @@ const char* letter(Verdict v) {
     case Verdict::Threw: return "t";
     case Verdict::Crashed: return "c";
     case Verdict::TimedOut: return "h";
+    case Verdict::Unjudged: return "u";
     default: return "";
   }
 }
-bool failing(Verdict v) { return v != Verdict::Exact && v != Verdict::Rounding && v != Verdict::Refused; }
+bool failing(Verdict v) {
+  return v != Verdict::Exact && v != Verdict::Rounding && v != Verdict::Refused && v != Verdict::Unjudged;
+}
 
 struct Case {
   Region subject, clip, result;
@@ -136,6 +144,9 @@ Verdict judgeAnswer(const Region& s, const Region& c, Op op, const Region& r, do
       case Outcome::BeyondRounding: return Verdict::Beyond;
       default: return Verdict::Gross;
     }
+  } catch (const oracle::CannotJudge& e) {
+    message = std::string("cannot judge: ") + e.what();
+    return Verdict::Unjudged;
   } catch (const std::exception& e) {
     // An answer the oracle cannot even read (non-finite coordinates) is as wrong as it gets.
     relative = std::numeric_limits<double>::infinity();
@@ -324,10 +335,12 @@ int run(int argc, char** argv) {
      << cases << " seeded cases per input class (seeds 1.." << cases << "), each with all five operations, "
      << "each method run in a worker process (replaced when it crashes; killed after " << timeout << " s on one case; 8 GiB address space); "
      << "every answer judged by the exact CGAL-arrangement oracle. The study took " << fmt(seconds, 3) << " s.\n\n"
-     << "**Cells**: share of correct answers (error area exactly 0, or within the rounding tolerance of the "
-        "answer's constructed points), then the count of each other outcome: **b** beyond rounding "
-        "(relative error area <= 1e-6), **g** gross (> 1e-6, or an unreadable answer), **r** refused the "
-        "input, **t** threw (gave up), **c** crashed, **h** hung (timed out); then the worst relative "
+     << "**Cells**: share of correct answers (error area exactly 0, or every wrong face inside the rounding "
+        "zones of the exact answer: each constructed vertex may be either double around its exact crossing, "
+        "input vertices may not move; see the README's *Judges*), then the count of each other outcome: "
+        "**b** beyond rounding (a wrong face outside the zones, relative error area <= 1e-6), **g** gross "
+        "(> 1e-6, or an unreadable answer), **r** refused the input, **t** threw (gave up), **c** crashed, "
+        "**h** hung (timed out), **u** the oracle could not judge (counted apart); then the worst relative "
         "error area (error area / largest of the operands', expected and result areas). *n/a*: "
         "GEOS, Boost.Geometry and CGAL take only valid polygons with holes and are run only on the "
         "classes marked valid. Clipper 6.4.2 runs with even-odd fill on every class.\n\n"
@@ -357,7 +370,7 @@ int run(int argc, char** argv) {
   // Findings, read off the tables.
   md << "\n## Findings\n\n";
   for (const Method& m : methods) {
-    int correct = 0, total = 0, gross = 0, beyond = 0, crashed = 0, hung = 0, threw = 0, refused = 0;
+    int correct = 0, total = 0, gross = 0, beyond = 0, crashed = 0, hung = 0, threw = 0, refused = 0, unjudged = 0;
     double worst = 0;
     for (Op op : kAllOps) {
       for (const auto& [cls, byMethod] : cells[op]) {
@@ -366,17 +379,18 @@ int run(int argc, char** argv) {
         const Cell& c = it->second;
         correct += c.correct(), total += c.total, gross += c.count(Verdict::Gross), beyond += c.count(Verdict::Beyond);
         crashed += c.count(Verdict::Crashed), hung += c.count(Verdict::TimedOut), threw += c.count(Verdict::Threw);
-        refused += c.count(Verdict::Refused);
+        refused += c.count(Verdict::Refused), unjudged += c.count(Verdict::Unjudged);
         worst = std::max(worst, c.worstRelative);
       }
     }
     md << "- **" << m.name << "**: " << percent(correct, total) << " of " << total << " answers correct";
-    if (gross + beyond + crashed + hung + threw + refused == 0) {
+    if (gross + beyond + crashed + hung + threw + refused + unjudged == 0) {
       md << "; no failure of any kind.\n";
       continue;
     }
     md << "; " << gross << " gross, " << beyond << " beyond rounding (worst relative error " << fmt(worst) << "), "
-       << threw << " gave up, " << refused << " refused, " << crashed << " crashed, " << hung << " hung.";
+       << threw << " gave up, " << refused << " refused, " << crashed << " crashed, " << hung << " hung, "
+       << unjudged << " the oracle could not judge.";
     const auto& byKind = failingCells[m.name];
     for (const char* kind : {"gross", "beyond-rounding", "threw", "crashed", "timed-out"}) {
       const auto it = byKind.find(kind);

@@ -1,5 +1,5 @@
 // ghcheck: judge a candidate result of op(SUBJECT, CLIP) with an oracle, or write the exact answer.
-// Exit codes: 0 pass, 1 fail, 2 bad input or usage.
+// Exit codes: 0 pass, 1 fail, 2 bad input or usage, 3 cannot judge.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -16,8 +16,10 @@ constexpr const char* kDescription =
     "Judge RESULT as the answer to op(SUBJECT, CLIP), or with --expected write the exact answer.\n"
     "Regions are read like ghclip reads them (WKT or GeoJSON, all rings pooled, even-odd rule).\n"
     "exact: CGAL arrangement with rational arithmetic; exact error area and a witness point.\n"
-    "sample: seeded points, even-odd crossing tests, points within delta of an edge skipped.\n"
-    "Exit codes: 0 pass, 1 fail, 2 bad input or usage.";
+    "Pass: every wrong face lies in the rounding zones of the exact answer's constructed vertices\n"
+    "(each may round to either double around it: --ulps widens that).\n"
+    "sample: seeded points, exact even-odd tests, points within an edge's delta of S or C skipped.\n"
+    "Exit codes: 0 pass, 1 fail, 2 bad input or usage, 3 cannot judge.";
 
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "ghcheck"};
@@ -25,6 +27,7 @@ int run(int argc, char** argv) {
                       outPath = "-", formatName = "wkt";
   bool json = false, expectedOnly = false;
   std::uint64_t seed = 1;
+  int ulps = 1;
   app.add_option("--op", opName, "intersection | union | difference | reverse-difference | xor")
       ->required();
   app.add_option("--oracle", oracleName, "exact | sample")->capture_default_str();
@@ -34,6 +37,11 @@ int run(int argc, char** argv) {
   app.add_flag("--json", json, "print the verdict as JSON");
   app.add_option("--svg", svgPath, "draw S, C, R and the wrong faces (red)");
   app.add_option("--seed", seed, "sampling oracle seed")->capture_default_str();
+  app.add_option("--ulps", ulps,
+                 "how far a constructed vertex may be from its exact crossing: 1 = a faithful rounding, "
+                 "k = k - 1 more ulps of its own coordinates on each side")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1 << 20));
   app.add_flag("--expected", expectedOnly, "write the exact answer's rings instead of judging");
   app.add_option("-o,--output", outPath, "with --expected: output file")->capture_default_str();
   app.add_option("--format", formatName, "with --expected: wkt | geojson")->capture_default_str();
@@ -61,7 +69,9 @@ int run(int argc, char** argv) {
   std::vector<gh::io::SvgMarker> markers;
   gh::Region wrong;
   if (oracleName == "exact") {
-    const auto v = gh::oracle::exactCheck(subject, clip, *op, result);
+    gh::oracle::ExactOptions options;
+    options.constructionUlps = ulps;
+    const auto v = gh::oracle::exactCheck(subject, clip, *op, result, options);
     pass = v.pass;
     std::cout << (json ? gh::tools::verdictJson(v).dump() + "\n" : gh::tools::verdictText(v));
     wrong = v.wrong;
@@ -69,6 +79,7 @@ int run(int argc, char** argv) {
   } else {
     gh::oracle::SampleOptions options;
     options.seed = seed;
+    options.constructionUlps = ulps;
     const auto v = gh::oracle::sampleCheck(subject, clip, *op, result, options);
     pass = v.pass();
     std::cout << (json ? gh::tools::verdictJson(v).dump() + "\n" : gh::tools::verdictText(v));

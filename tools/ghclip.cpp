@@ -1,5 +1,6 @@
 // ghclip: clip two regions read from files (WKT or GeoJSON) and write the result.
-// Exit codes: 0 done, 1 the algorithm failed on valid input, 2 bad input or usage.
+// Exit codes: 0 done, 1 the algorithm (or --check) failed on valid input, 2 bad input or usage,
+// 3 --check cannot judge.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <iostream>
@@ -27,7 +28,8 @@ constexpr const char* kDescription =
     "Output: one polygon per ring (MULTIPOLYGON), to be read the same way.\n"
     "Arithmetic: exact by default (exact predicates, Simulation of Simplicity: no input vertex\n"
     "moves); --variant naive or --arithmetic paper runs the paper's doubles and perturbation.\n"
-    "Exit codes: 0 done, 1 clipping failed on valid input, 2 bad input or usage.";
+    "Exit codes: 0 done, 1 clipping or --check failed on valid input, 2 bad input or usage,\n"
+    "3 --check cannot judge.";
 
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "ghclip"};

@@ -4,6 +4,7 @@
 
 #include "ghclip/errors.h"
 #include "ghio/formats.h"
+#include "ghoracle/exact_oracle.h"
 
 namespace gh::tools {
 namespace {
@@ -48,6 +49,9 @@ int guardedMain(const char* tool, int argc, char** argv, int (*run)(int, char**)
     return usageError(tool, e.what());
   } catch (const InvalidInput& e) {
     return usageError(tool, e.what());
+  } catch (const oracle::CannotJudge& e) {
+    std::cerr << tool << ": cannot judge: " << oneLine(e.what()) << std::endl;
+    return kExitCannotJudge;
   } catch (const ClipFailure& e) {
     std::cerr << tool << ": clipping failed: " << oneLine(e.what()) << std::endl;
     return kExitFailed;

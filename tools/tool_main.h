@@ -10,8 +10,10 @@
 
 namespace gh::tools {
 
-inline constexpr int kExitFailed = 1;    // the algorithm or check failed on valid input
-inline constexpr int kExitBadInput = 2;  // bad input or usage
+// Exit codes of every tool (the README has the table).
+inline constexpr int kExitFailed = 1;       // the algorithm or check failed on valid input
+inline constexpr int kExitBadInput = 2;     // bad input or usage
+inline constexpr int kExitCannotJudge = 3;  // a judge could not decide (never pass, never fail)
 
 // Bad input found by a tool; its message already names the file.
 class BadInput : public std::runtime_error {
@@ -31,7 +33,8 @@ std::optional<int> parseCommandLine(CLI::App& app, const char* tool, int argc, c
 Region readRegion(const std::string& path);
 
 // Runs `run`, turning every exception into one line on stderr and an exit code:
-// BadInput / gh::InvalidInput -> 2, gh::ClipFailure -> 1, anything else -> 1.
+// BadInput / gh::InvalidInput -> 2, gh::ClipFailure -> 1, oracle::CannotJudge -> 3
+// ("cannot judge: <reason>"), anything else -> 1.
 int guardedMain(const char* tool, int argc, char** argv, int (*run)(int, char**));
 
 }  // namespace gh::tools

@@ -12,7 +12,10 @@ nlohmann::json verdictJson(const oracle::ExactVerdict& v) {
                       {"error_area", v.errorArea},
                       {"error_area_exact", v.errorAreaExact.empty() ? nlohmann::json() : nlohmann::json(v.errorAreaExact)},
                       {"relative_error", v.relativeError()},
-                      {"tolerance", v.tolerance},
+                      {"beyond_rounding_area", v.beyondRoundingArea},
+                      {"beyond_rounding_area_exact", v.beyondRoundingAreaExact.empty() ? nlohmann::json() : nlohmann::json(v.beyondRoundingAreaExact)},
+                      {"relative_beyond_rounding", v.relativeBeyondRounding()},
+                      {"rounding_zones", v.zones},
                       {"faces", v.faces},
                       {"vertices", v.vertices},
                       {"edges", v.edges},
@@ -45,7 +48,10 @@ std::string verdictText(const oracle::ExactVerdict& v) {
                                             " characters; --json prints it)")
     << "\n"
     << "relative error: " << v.relativeError() << "\n"
-    << "tolerance: " << v.tolerance << "\n";
+    << "beyond rounding: " << v.beyondRoundingArea
+    << (v.pass ? (v.errorArea > 0 ? " (every wrong face lies in the rounding zones of the exact answer's constructed vertices)" : "")
+               : " (wrong faces outside every rounding zone)")
+    << "\n";
   if (v.witness) s << "witness: " << v.witness->x << ' ' << v.witness->y << "\n";
   s << "arrangement: " << v.faces << " faces, " << v.vertices << " vertices, " << v.edges
     << " edges in " << v.seconds << " s\n";
@@ -57,7 +63,7 @@ std::string verdictText(const oracle::SampleVerdict& v) {
   s.precision(17);
   s << "verdict: " << (v.pass() ? "pass" : "fail") << " (sampling oracle)\n"
     << "checked: " << v.checked << ", skipped: " << v.skipped << " (within " << v.delta
-    << " of an edge), mismatched: " << v.mismatched << "\n";
+    << " of an edge of S or C, or on an edge of R), mismatched: " << v.mismatched << "\n";
   if (v.firstMismatch) s << "first mismatch: " << v.firstMismatch->x << ' ' << v.firstMismatch->y << "\n";
   s << "time: " << v.seconds << " s\n";
   return s.str();

@@ -18,7 +18,12 @@ Judged judge(const Method& m, const Region& subject, const Region& clip, Op op) 
     j.message = e.what();
     return j;
   }
-  j.outcome = judgeAnswer(subject, clip, op, j.result, j.relativeError);
+  try {
+    j.outcome = judgeAnswer(subject, clip, op, j.result, j.relativeError);
+  } catch (const oracle::CannotJudge& e) {
+    j.outcome = Outcome::CannotJudge;
+    j.message = e.what();
+  }
   return j;
 }
 

@@ -18,7 +18,8 @@ struct Judged {
 Judged judge(const Method& m, const Region& subject, const Region& clip, Op op);
 
 // The outcome of an answer R to op(S, C) by the exact oracle (Exact, Rounding, BeyondRounding or
-// Gross), and its relative error area. Throws what exactCheck throws (unreadable answers).
+// Gross), and its relative error area. Throws what exactCheck throws (unreadable answers,
+// oracle::CannotJudge).
 Outcome judgeAnswer(const Region& subject, const Region& clip, Op op, const Region& result, double& relativeError);
 
 }  // namespace gh::experiments

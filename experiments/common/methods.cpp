@@ -28,6 +28,7 @@ std::string outcomeName(Outcome o) {
     case Outcome::Gross: return "gross (rel. > 1e-6)";
     case Outcome::Refused: return "refused";
     case Outcome::Failed: return "failed";
+    case Outcome::CannotJudge: return "cannot judge";
   }
   return "?";
 }

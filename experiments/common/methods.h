@@ -23,14 +23,16 @@ std::vector<Method> allMethods();
 // How one answer fared against the exact oracle.
 enum class Outcome {
   Exact,           // error area exactly 0
-  Rounding,        // 0 < error area <= rounding tolerance
-  BeyondRounding,  // above tolerance, relative error <= 1e-6
+  Rounding,        // 0 < error area, every wrong face within the rounding zones (a pass)
+  BeyondRounding,  // a wrong face outside them, relative error <= 1e-6
   Gross,           // relative error > 1e-6
   Refused,         // the method does not accept this input
   Failed,          // it threw (ClipFailure or another exception)
+  CannotJudge,     // the oracle could not decide (counted apart: neither right nor wrong)
 };
-inline constexpr Outcome kOutcomes[] = {Outcome::Exact, Outcome::Rounding, Outcome::BeyondRounding,
-                                        Outcome::Gross, Outcome::Refused, Outcome::Failed};
+inline constexpr Outcome kOutcomes[] = {Outcome::Exact,  Outcome::Rounding, Outcome::BeyondRounding,
+                                        Outcome::Gross,  Outcome::Refused,  Outcome::Failed,
+                                        Outcome::CannotJudge};
 std::string outcomeName(Outcome o);
 
 }  // namespace gh::experiments

@@ -172,6 +172,20 @@ Region archipelago(std::size_t n, Point offset, Rng& rng) {
   return out;
 }
 
+// One large and one small feature in the same problem: a triangle of size 2^e (e in 10..480)
+// whose first edge runs through the origin, holding a star hole of size 2^-f (f in 0..300) just
+// above that edge; the clip is a star of size 2^-f that crosses the edge and overlaps the hole.
+// A judge with one tolerance for the whole problem cannot see the small feature at all.
+Workload mixedMagnitude(std::size_t n, Rng& rng) {
+  const double big = std::ldexp(1.0, uniformInt(rng, 10, 480));
+  const double small = std::ldexp(1.0, -uniformInt(rng, 0, 300));
+  const double slope = uniformInt(rng, 1, 7) / 8.0, apex = uniformInt(rng, 0, 7) / 8.0;
+  const Ring shell{{-big, -big * slope}, {big, big * slope}, {big * apex, big}};
+  const Ring hole = starRing(std::max<std::size_t>(n / 2, 3), {0, 3 * small}, 0.5 * small, small, rng);
+  const Ring clip = starRing(std::max<std::size_t>(n, 3), {0, 2 * small}, 1.5 * small, 2.5 * small, rng);
+  return {{shell, hole}, {clip}};
+}
+
 Workload degenerateFamily(const std::string& name, std::size_t n, Rng& rng) {
   auto g = [&](int lo, int hi) { return static_cast<double>(uniformInt(rng, lo, hi)); };
   if (name == "identical") {
@@ -240,6 +254,7 @@ Workload base(const std::string& name, std::size_t n, Rng& rng, std::uint64_t se
     return {flower(k, 0.5, 1, 0), flower(k, 0.55, 0.95, 0.5 * kPi / static_cast<double>(k))};
   }
   if (name == "archipelago") return {archipelago(n, {0, 0}, rng), archipelago(n, {0.45, 0.3}, rng)};
+  if (name == "mixed-magnitude") return mixedMagnitude(n, rng);
   return degenerateFamily(name, n, rng);
 }
 
@@ -259,7 +274,8 @@ const std::vector<std::string>& workloadNames() {
       "random",        "simple",         "grid",        "identical",
       "shared-edge",   "touching-vertex", "nested-touching", "sliver",
       "sub-boundary",  "bitset-grid",    "circles",     "coastline",
-      "holes",         "pie",            "flower",      "archipelago"};
+      "holes",         "pie",            "flower",      "archipelago",
+      "mixed-magnitude"};
   return names;
 }
 

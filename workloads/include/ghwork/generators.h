@@ -18,6 +18,9 @@
 //   flower       n kite-shaped petals sharing the origin against another flower, turned
 //   archipelago  islands holding lakes holding islets, about n vertices in n / 15 rings, against
 //                another archipelago shifted by less than a cell: many rings, few crossings
+//   mixed-magnitude  a triangle of size 2^10..2^480 with an edge through the origin, holding a
+//                star hole of size 2^-300..1 just above it, against a star of that small size
+//                crossing the edge and the hole (valid polygons)
 // A suffix picks a near-degenerate variant of any workload:
 //   +ulp   every coordinate moved by one ulp up or down
 //   +tiny  scaled by 2^-997 (about 1e-300)      +huge  scaled by a power of two to about 1e150
