@@ -62,7 +62,7 @@ TEST(Oracles, NaivePerturbationIsSeenAsASmallNonRoundingError) {
     EXPECT_GT(stats.perturbations, 0u);
     const auto v = oracle::exactCheck(s, *c, Op::Union, r);
     EXPECT_FALSE(v.pass);
-    EXPECT_GT(v.errorArea, v.tolerance);
+    EXPECT_GT(v.beyondRoundingArea, 0);
     EXPECT_LT(v.relativeError(), 1e-11);
   }
 }
@@ -141,12 +141,12 @@ TEST(Oracles, InvariantsCatchImpossibleAreas) {
       oracle::invariantViolations(a, b, Op::Intersection, {{{1, 1}, {1, 1}, {2, 2}, {1, 2}}}).empty());
 }
 
-// 1000 seeded cases of the paper's workload (n = 5..50, all five operations): the two oracles
+// 400 seeded cases of the paper's workload (n = 5..50, all five operations): the two oracles
 // must reach the same verdict. Half the answers are damaged (largest ring dropped) so that both
 // verdicts are exercised.
 TEST(Oracles, AgreeOnTheRandomWorkload) {
   int agree = 0, passes = 0, fails = 0;
-  for (int i = 0; i < 1000; ++i) {
+  for (int i = 0; i < 400; ++i) {
     const std::size_t n = 5 + static_cast<std::size_t>(i) % 46;
     const Region s{work::randomRing(n, 2 * i + 1)}, c{work::randomRing(n, 2 * i + 2)};
     const Op op = kAllOps[i % 5];
@@ -166,8 +166,8 @@ TEST(Oracles, AgreeOnTheRandomWorkload) {
     (exact ? passes : fails)++;
   }
   RecordProperty("agreements", agree);
-  EXPECT_GT(passes, 300);
-  EXPECT_GT(fails, 300);
+  EXPECT_GT(passes, 120);
+  EXPECT_GT(fails, 120);
 }
 
 // Judging at the ends of the double range (the clip's own tests at those scales are in
@@ -200,6 +200,118 @@ TEST(ExtremeMagnitudes, InvariantsAllowForDenormalAreaMeasurement) {
   const Region r = clip(s, {}, Op::Union);
   EXPECT_TRUE(oracle::exactCheck(s, {}, Op::Union, r).pass);
   EXPECT_TRUE(oracle::invariantViolations(s, {}, Op::Union, r).empty());
+}
+
+// Issue 17's cases: the tolerance is each constructed vertex's own rounding, so a small feature
+// next to huge coordinates is judged at its own resolution. Each answer must pass both oracles;
+// every candidate that misses the small feature must fail both.
+struct MixedCase {
+  const char* name;
+  Region subject, clip;
+  Op op;
+};
+
+std::vector<MixedCase> mixedMagnitudeCases() {
+  const double big = 1125899906842624;  // 2^50
+  const Ring star{{0, 2}, {0.5, 0.5}, {2, 0}, {0.5, -0.5}, {0, -2}, {-0.5, -0.5}, {-2, 0}, {-0.5, 0.5}};
+  auto scaled = [](Ring r, double f) {
+    for (Point& p : r) p = {p.x * f, p.y * f};
+    return r;
+  };
+  return {
+      // The issue's first case: a 2^50 triangle whose edge y = x / 2 cuts the unit square.
+      {"big triangle, unit square",
+       {{{-big, -big / 2}, {big, big / 2}, {big, big}}},
+       {rect(-1, -1, 1, 1)},
+       Op::Intersection},
+      // The same edge with crossings that are not doubles (a star of 1/3-ish slopes).
+      {"big triangle, small star",
+       {{{-big, -big / 2}, {big, big / 2}, {big, big}}},
+       {star},
+       Op::Intersection},
+      // A +-1e10 triangle holding a 1e-10 hole, against a 1e-10 square over the hole's corner.
+      {"1e10 triangle with 1e-10 hole",
+       {{{-1e10, -1e10}, {1e10, -1e10}, {0, 1e10}}, rect(-1e-10, -1e-10, 1e-10, 1e-10)},
+       {scaled(star, 1e-10)},
+       Op::Intersection},
+      {"1e10 triangle with 1e-10 hole, difference",
+       {{{-1e10, -1e10}, {1e10, -1e10}, {0, 1e10}}, rect(-1e-10, -1e-10, 1e-10, 1e-10)},
+       {scaled(star, 1e-10)},
+       Op::Difference},
+      // A unit square next to 1e150 coordinates, disjoint from them.
+      {"unit square beside 1e150",
+       {rect(1e150, 1e150, 2e150, 3e150)},
+       {{{0, 0}, {1, 0.3}, {0.7, 1}}},
+       Op::Union},
+      // The issue's crash case: a 2.6e120 triangle against a 1e-200 square.
+      {"2.6e120 triangle, 1e-200 square",
+       {{{-2.5822498780869086e+120, -1.2911249390434543e+120},
+         {2.5822498780869086e+120, 1.2911249390434543e+120},
+         {2.5822498780869086e+120, 2.5822498780869086e+120}}},
+       {rect(-1e-200, -1e-200, 1e-200, 1e-200)},
+       Op::Intersection},
+  };
+}
+
+TEST(LocalTolerance, SmallFeaturesBesideHugeCoordinatesAreJudgedAtTheirOwnScale) {
+  for (const MixedCase& c : mixedMagnitudeCases()) {
+    const Region answer = clip(c.subject, c.clip, c.op);
+    EXPECT_TRUE(oracle::exactCheck(c.subject, c.clip, c.op, answer).pass) << c.name;
+    EXPECT_TRUE(oracle::sampleCheck(c.subject, c.clip, c.op, answer).pass()) << c.name;
+    const Region candidates[] = {{}, c.subject, c.clip, answer.empty() ? Region{} : Region(answer.begin() + 1, answer.end())};
+    for (const Region& wrong : candidates) {
+      if (oracle::sameExactArea(wrong, answer) && oracle::exactCheck(c.subject, c.clip, c.op, wrong).errorAreaExact == "0") {
+        continue;  // not wrong for this case
+      }
+      const auto v = oracle::exactCheck(c.subject, c.clip, c.op, wrong);
+      EXPECT_FALSE(v.pass) << c.name << ": a wrong candidate of " << wrong.size() << " rings passes, error "
+                           << v.errorArea;
+      EXPECT_NE(v.beyondRoundingAreaExact, "0") << c.name;
+      EXPECT_FALSE(oracle::sampleCheck(c.subject, c.clip, c.op, wrong).pass())
+          << c.name << ": the sampling oracle passes a wrong candidate " << io::writeWkt(wrong);
+    }
+  }
+}
+
+// The mixed-magnitude workload (triangles to 2^480 holding holes down to 2^-300): the exact
+// variant's answers pass both judges; the empty answer and either operand fail both.
+TEST(LocalTolerance, MixedMagnitudeWorkloadAnswersPassAndWrongOnesFail) {
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const auto w = work::generate("mixed-magnitude", 12, seed);
+    for (Op op : {Op::Intersection, Op::Union, Op::Difference}) {
+      const Region answer = clip(w.subject, w.clip, op);
+      EXPECT_TRUE(oracle::exactCheck(w.subject, w.clip, op, answer).pass) << seed << " " << name(op);
+      EXPECT_TRUE(oracle::sampleCheck(w.subject, w.clip, op, answer).pass()) << seed << " " << name(op);
+      for (const Region* wrong : {&w.subject, &w.clip}) {
+        if (oracle::exactCheck(w.subject, w.clip, op, *wrong).errorAreaExact == "0") continue;
+        EXPECT_FALSE(oracle::exactCheck(w.subject, w.clip, op, *wrong).pass) << seed << " " << name(op);
+        EXPECT_FALSE(oracle::sampleCheck(w.subject, w.clip, op, *wrong).pass()) << seed << " " << name(op);
+      }
+      EXPECT_FALSE(oracle::exactCheck(w.subject, w.clip, op, {}).pass) << seed << " " << name(op);
+      EXPECT_FALSE(oracle::sampleCheck(w.subject, w.clip, op, {}).pass()) << seed << " " << name(op);
+    }
+  }
+}
+
+// Certified sums (the issue saw 5.2 and 5.199999999999999 for two answers of exactly 26/5): the
+// square [0,2]^2 cut by the line 3x + 5y = 15 has area 4 - 1/30 = 119/30 exactly, with
+// crossings (2, 9/5) and (5/3, 2) that are not doubles. The interval the oracle reports for it
+// must contain 119/30 however the sum is associated, i.e. for every rotation of the rings.
+TEST(LocalTolerance, AreaIntervalsContainTheExactArea) {
+  const Region square{rect(0, 0, 2, 2)};
+  Ring triangle{{0, 0}, {5, 0}, {0, 3}};
+  const long double truth = 119.0L / 30;
+  for (int turn = 0; turn < 3; ++turn) {
+    std::rotate(triangle.begin(), triangle.begin() + 1, triangle.end());
+    const Region answer = clip(square, {triangle}, Op::Intersection);
+    const auto v = oracle::exactCheck(square, {triangle}, Op::Intersection, answer, {false, false, false});
+    EXPECT_LT(v.areaUncertainty, 1e-12);
+    const long double lo = static_cast<long double>(v.expectedArea) - v.areaUncertainty;
+    const long double hi = static_cast<long double>(v.expectedArea) + v.areaUncertainty;
+    EXPECT_LE(lo, truth) << turn;
+    EXPECT_GE(hi, truth) << turn;
+    EXPECT_TRUE(v.pass);
+  }
 }
 
 }  // namespace
