@@ -4,7 +4,7 @@
 #   experiments/mutants/run.sh BUILD_DIR [--only ID] [--fuzz-seconds N]
 #
 # The mutants are data: manifest.tsv lists each one (id, patch, what it breaks) and the patch
-# beside it. In a scratch copy of the working tree (never this one), each mutant is applied,
+# beside it. In a scratch copy of the last commit (never this tree), each mutant is applied,
 # built, tested with `ctest --stop-on-failure` (every unit, property, golden, CLI and fuzz-replay
 # test), and reverted. A mutant is killed when the build of the tests or a test fails. With
 # --fuzz-seconds N and clang present, survivors also face each libFuzzer target for N seconds
@@ -29,11 +29,10 @@ JOBS="${GHCLIP_JOBS:-$(nproc)}"
 SCRATCH="${GHCLIP_MUTANTS_DIR:-${TMPDIR:-/tmp}/ghclip-mutants}"
 log() { printf '[mutants] %s\n' "$*" >&2; }
 
-# The scratch copy: every tracked and untracked-but-not-ignored file of the working tree.
+# The scratch copy: the last commit (the report names it; uncommitted changes are not tested).
 rm -rf "$SCRATCH"
 mkdir -p "$SCRATCH/src"
-(cd "$ROOT" && git ls-files -z --cached --others --exclude-standard | xargs -0 tar -cf - 2>/dev/null) |
-  tar -xf - -C "$SCRATCH/src"
+git -C "$ROOT" archive --format=tar HEAD | tar -xf - -C "$SCRATCH/src"
 SRC="$SCRATCH/src" B="$SCRATCH/build"
 cmake -S "$SRC" -B "$B" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 
