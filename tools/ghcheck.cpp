@@ -19,12 +19,12 @@ constexpr const char* kDescription =
     "Pass: every wrong face lies in the rounding zones of the exact answer's constructed vertices\n"
     "(each may round to either double around it: --ulps widens that).\n"
     "sample: seeded points, exact even-odd tests, points within an edge's delta of S or C skipped.\n"
-    "Exit codes: 0 pass, 1 fail, 2 bad input or usage, 3 cannot judge.";
+    "Exit codes: 0 pass, 1 fail, 2 bad input, usage or an unwritable output, 3 cannot judge.";
 
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "ghcheck"};
   std::string opName, oracleName = "exact", subjectPath, clipPath, resultPath, svgPath,
-                      outPath = "-", formatName = "wkt";
+                      outPath = "-", formatName = "wkt", layoutName = "ogc";
   bool json = false, expectedOnly = false;
   std::uint64_t seed = 1;
   int ulps = 1;
@@ -45,6 +45,7 @@ int run(int argc, char** argv) {
   app.add_flag("--expected", expectedOnly, "write the exact answer's rings instead of judging");
   app.add_option("-o,--output", outPath, "with --expected: output file")->capture_default_str();
   app.add_option("--format", formatName, "with --expected: wkt | geojson")->capture_default_str();
+  app.add_option("--layout", layoutName, "with --expected: ogc (valid polygons with holes) | rings")->capture_default_str();
   if (const auto exitCode = gh::tools::parseCommandLine(app, "ghcheck", argc, argv)) return *exitCode;
   const auto op = gh::parseOp(opName);
   if (!op) return gh::tools::usageError("ghcheck", "unknown --op '" + opName + "'");
@@ -54,17 +55,21 @@ int run(int argc, char** argv) {
   if (expectedOnly == !resultPath.empty()) {
     return gh::tools::usageError("ghcheck", "give either RESULT or --expected");
   }
-  const gh::Region subject = gh::tools::readRegion(subjectPath);
-  const gh::Region clip = gh::tools::readRegion(clipPath);
+  const gh::Region subject = gh::tools::readValidRegion(subjectPath);
+  const gh::Region clip = gh::tools::readValidRegion(clipPath);
 
   if (expectedOnly) {
     const gh::Region answer = gh::oracle::exactAnswer(subject, clip, *op);
-    gh::io::writeText(outPath, gh::io::write(answer, formatName == "geojson" ? gh::io::Format::GeoJson
-                                                                           : gh::io::Format::Wkt));
+    if (layoutName != "ogc" && layoutName != "rings") {
+      return gh::tools::usageError("ghcheck", "unknown --layout '" + layoutName + "'");
+    }
+    gh::io::writeText(outPath, gh::io::write(answer, formatName == "geojson" ? gh::io::Format::GeoJson : gh::io::Format::Wkt,
+                                             layoutName == "ogc" ? gh::io::Layout::Ogc : gh::io::Layout::Rings));
     return 0;
   }
 
-  const gh::Region result = gh::tools::readRegion(resultPath);
+  // A candidate's rings of fewer than 3 distinct vertices bound nothing: dropped, not refused.
+  const gh::Region result = gh::tools::readValidRegion(resultPath, gh::OnBadRing::Drop);
   bool pass;
   std::vector<gh::io::SvgMarker> markers;
   gh::Region wrong;

@@ -25,16 +25,17 @@ constexpr const char* kDescription =
     "Input: WKT POLYGON/MULTIPOLYGON or GeoJSON (Polygon, MultiPolygon, Feature...), '-' for\n"
     "stdin. All rings of an input are pooled and its interior is the even-odd rule over all of\n"
     "them: holes are rings inside rings, and OGC shell/hole roles are ignored.\n"
-    "Output: one polygon per ring (MULTIPOLYGON), to be read the same way.\n"
+    "Output: a MULTIPOLYGON (GeoJSON MultiPolygon) of polygons with holes that GEOS calls valid\n"
+    "(--layout ogc, the default), or of one polygon per raw ring (--layout rings).\n"
     "Arithmetic: exact by default (exact predicates, Simulation of Simplicity: no input vertex\n"
     "moves); --variant naive or --arithmetic paper runs the paper's doubles and perturbation.\n"
-    "Exit codes: 0 done, 1 clipping or --check failed on valid input, 2 bad input or usage,\n"
-    "3 --check cannot judge.";
+    "Exit codes: 0 done, 1 clipping or --check failed on valid input, 2 bad input, usage or an\n"
+    "output that cannot be written (no output file is left), 3 --check cannot judge.";
 
 int run(int argc, char** argv) {
   CLI::App app{kDescription, "ghclip"};
   std::string opName, variantName, arithmeticName, searchName, subjectPath, clipPath, outPath = "-",
-                      formatName = "wkt", svgPath;
+                      formatName = "wkt", layoutName = "ogc", svgPath;
   std::string checkName, peerName;
   bool wantStats = false, sanitize = false;
   unsigned threads = 0;
@@ -56,6 +57,10 @@ int run(int argc, char** argv) {
   app.add_option("CLIP", clipPath, "clip region file, '-' for stdin")->required();
   app.add_option("-o,--output", outPath, "result file ('-' = stdout)")->capture_default_str();
   app.add_option("--format", formatName, "output format: wkt | geojson")->capture_default_str();
+  app.add_option("--layout", layoutName,
+                 "ogc (polygons with holes that GEOS calls valid: what GIS tools read) | rings (one polygon per raw "
+                 "Greiner-Hormann ring: only an even-odd reader reads it right)")
+      ->capture_default_str();
   app.add_option("--svg", svgPath, "also draw subject, clip and result to this SVG file");
   app.add_flag("--stats", wantStats,
                "print statistics as JSON (stdout when -o names a file, else stderr)");
@@ -90,6 +95,9 @@ int run(int argc, char** argv) {
   if (formatName != "wkt" && formatName != "geojson") {
     return gh::tools::usageError("ghclip", "unknown --format '" + formatName + "'");
   }
+  if (layoutName != "ogc" && layoutName != "rings") {
+    return gh::tools::usageError("ghclip", "unknown --layout '" + layoutName + "'");
+  }
   if (!checkName.empty() && checkName != "exact" && checkName != "sample") {
     return gh::tools::usageError("ghclip", "unknown --check '" + checkName + "'");
   }
@@ -97,8 +105,14 @@ int run(int argc, char** argv) {
     return gh::tools::usageError("ghclip", "only one of SUBJECT and CLIP can be stdin");
   }
 
-  const gh::Region subject = gh::tools::readRegion(subjectPath);
-  const gh::Region clip = gh::tools::readRegion(clipPath);
+  // Validated here, not only inside gh::clip: the peers get exactly what the clip accepts.
+  using Clock = std::chrono::steady_clock;
+  auto secondsSince = [](Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const auto readStart = Clock::now();
+  const gh::OnBadRing onBadRing = sanitize ? gh::OnBadRing::Drop : gh::OnBadRing::Throw;
+  const gh::Region subject = gh::tools::readValidRegion(subjectPath, onBadRing);
+  const gh::Region clip = gh::tools::readValidRegion(clipPath, onBadRing);
+  const double readSeconds = secondsSince(readStart);
   options.sanitize = sanitize;
   options.threads = threads;
   const gh::peers::Peer* peer = nullptr;
@@ -111,7 +125,13 @@ int run(int argc, char** argv) {
   try {
     if (peer) {
       const auto start = std::chrono::steady_clock::now();
-      result = peer->clip(subject, clip, *op);
+      try {
+        result = peer->clip(subject, clip, *op);
+      } catch (const gh::InvalidInput&) {
+        throw;  // a refusal, with its reason: exit 2
+      } catch (const std::exception& e) {
+        throw gh::ClipFailure(std::string(peer->name()) + ": " + e.what());  // named, exit 1
+      }
       stats.phase1Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       stats.outputRings = result.size();
       stats.outputVertices = gh::vertexCount(result);
@@ -123,15 +143,20 @@ int run(int argc, char** argv) {
   }
 
   const auto format = formatName == "geojson" ? gh::io::Format::GeoJson : gh::io::Format::Wkt;
-  gh::io::writeText(outPath, gh::io::write(result, format));
+  // The answer and its picture together, or neither (a failing --svg leaves no -o file).
+  const auto writeStart = Clock::now();
+  gh::io::OutputFiles files;
+  files.add(outPath, gh::io::write(result, format, layoutName == "ogc" ? gh::io::Layout::Ogc : gh::io::Layout::Rings));
   if (!svgPath.empty()) {
     const std::string title = std::string(gh::name(*op)) + " (" + (peer ? peerName : gh::name(options)) +
                               "), even-odd area " + std::to_string(gh::evenOddArea(result));
-    gh::io::writeText(svgPath, gh::io::svgPicture({{&subject, "#c6dbef", "#2171b5", "subject"},
-                                                   {&clip, "#fcbba1", "#cb181d", "clip"},
-                                                   {&result, "#2ca02c", "#145214", "result", 0.6}},
-                                                  title));
+    files.add(svgPath, gh::io::svgPicture({{&subject, "#c6dbef", "#2171b5", "subject"},
+                                           {&clip, "#fcbba1", "#cb181d", "clip"},
+                                           {&result, "#2ca02c", "#145214", "result", 0.6}},
+                                          title));
   }
+  files.commit();
+  const double writeSeconds = secondsSince(writeStart);
   nlohmann::json check;
   bool checkPassed = true;
   if (checkName == "exact") {
@@ -155,6 +180,8 @@ int run(int argc, char** argv) {
       j["search"] = gh::name(options.search);
       j["threads"] = threads == 0 ? gh::availableThreads() : threads;
     }
+    j["read_seconds"] = readSeconds;    // reading and validating both operands
+    j["write_seconds"] = writeSeconds;  // layout, formatting and writing every output
     if (!check.is_null()) j["check"] = check;
     (outPath == "-" ? std::cerr : std::cout) << j.dump() << std::endl;
   } else if (!check.is_null()) {

@@ -50,13 +50,14 @@ int run(int argc, char** argv) {
   } else {
     text = gh::io::writeGeoJsonPair(w.subject, w.clip);
   }
-  gh::io::writeText(outPath, text);
+  gh::io::OutputFiles files;
+  files.add(outPath, text);
   if (!svgPath.empty()) {
-    gh::io::writeText(svgPath, gh::io::svgPicture({{&w.subject, "#c6dbef", "#2171b5", "subject"},
-                                                   {&w.clip, "#fcbba1", "#cb181d", "clip"}},
-                                                  workload + " n=" + std::to_string(n) +
-                                                      " seed=" + std::to_string(seed)));
+    files.add(svgPath, gh::io::svgPicture({{&w.subject, "#c6dbef", "#2171b5", "subject"},
+                                           {&w.clip, "#fcbba1", "#cb181d", "clip"}},
+                                          workload + " n=" + std::to_string(n) + " seed=" + std::to_string(seed)));
   }
+  files.commit();
   return 0;
 }
 

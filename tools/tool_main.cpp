@@ -24,9 +24,10 @@ int usageError(const std::string& tool, const std::string& message) {
 }
 
 std::optional<int> parseCommandLine(CLI::App& app, const char* tool, int argc, char** argv) {
+  app.set_version_flag("--version", std::string(tool) + " " GHCLIP_VERSION);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
+  } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     return usageError(tool, e.what());
@@ -42,12 +43,23 @@ Region readRegion(const std::string& path) {
   }
 }
 
+Region readValidRegion(const std::string& path, OnBadRing onBadRing) {
+  const Region region = readRegion(path);
+  try {
+    return normalized(region, onBadRing);
+  } catch (const InvalidInput& e) {
+    throw BadInput(path + ": " + e.what());
+  }
+}
+
 int guardedMain(const char* tool, int argc, char** argv, int (*run)(int, char**)) {
   try {
     return run(argc, argv);
   } catch (const BadInput& e) {
     return usageError(tool, e.what());
   } catch (const InvalidInput& e) {
+    return usageError(tool, e.what());
+  } catch (const io::WriteError& e) {
     return usageError(tool, e.what());
   } catch (const oracle::CannotJudge& e) {
     std::cerr << tool << ": cannot judge: " << oneLine(e.what()) << std::endl;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ghclip/region.h"
+#include "ghclip/validate.h"
 
 namespace gh::tools {
 
@@ -31,6 +32,10 @@ std::optional<int> parseCommandLine(CLI::App& app, const char* tool, int argc, c
 
 // Reads a region from a file ("-" = stdin), WKT or GeoJSON; BadInput names the file.
 Region readRegion(const std::string& path);
+// ...and validated as the clip validates its operands (gh::normalized: finite coordinates of at
+// most 2^500, rings of 3 distinct vertices unless onBadRing drops them), so every tool refuses
+// the same input with exit 2, peers and judges included.
+Region readValidRegion(const std::string& path, OnBadRing onBadRing = OnBadRing::Throw);
 
 // Runs `run`, turning every exception into one line on stderr and an exit code:
 // BadInput / gh::InvalidInput -> 2, gh::ClipFailure -> 1, oracle::CannotJudge -> 3

@@ -8,6 +8,7 @@
 
 #include "ghclip/errors.h"
 #include "ghio/formats.h"
+#include "ghio/ogc_layout.h"
 
 namespace gh::io {
 
@@ -19,7 +20,11 @@ Region readAuto(std::string_view text) {
   throw InvalidInput("empty input (expected WKT or GeoJSON)");
 }
 
-std::string write(const Region& region, Format format) {
+std::string write(const Region& region, Format format, Layout layout) {
+  if (layout == Layout::Ogc) {
+    const auto polygons = ogcPolygons(region);
+    return format == Format::GeoJson ? writeGeoJson(polygons) : writeWkt(polygons);
+  }
   return format == Format::GeoJson ? writeGeoJson(region) : writeWkt(region);
 }
 
@@ -36,31 +41,6 @@ std::string readText(const std::string& path) {
   s << in.rdbuf();
   if (in.bad()) throw InvalidInput("read error");
   return s.str();
-}
-
-void writeText(const std::string& path, const std::string& text) {
-  if (path == "-") {
-    std::cout << text << '\n';
-    std::cout.flush();
-    return;
-  }
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + path);
-    out << text << '\n';
-    out.close();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("cannot write " + path);
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + ec.message());
-  }
 }
 
 }  // namespace gh::io

@@ -96,6 +96,22 @@ json multiPolygon(const Region& region) {
 
 std::string writeGeoJson(const Region& region) { return multiPolygon(region).dump(); }
 
+std::string writeGeoJson(const std::vector<PolygonWithHoles>& polygons) {
+  auto ring = [](const Ring& r) {
+    json coords = json::array();
+    for (const Point& p : r) coords.push_back({p.x, p.y});
+    if (!r.empty()) coords.push_back({r.front().x, r.front().y});
+    return coords;
+  };
+  json polys = json::array();
+  for (const PolygonWithHoles& p : polygons) {
+    json rings = json::array({ring(p.shell)});
+    for (const Ring& h : p.holes) rings.push_back(ring(h));
+    polys.push_back(std::move(rings));
+  }
+  return json{{"type", "MultiPolygon"}, {"coordinates", polys}}.dump();
+}
+
 std::string writeGeoJsonPair(const Region& subject, const Region& clip) {
   json features = json::array();
   for (const auto& [name, region] : {std::pair{"subject", &subject}, std::pair{"clip", &clip}}) {

@@ -6,6 +6,8 @@
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
 
+#include <cmath>
+
 #include "ghclip/polygons_with_holes.h"
 #include "ghpeers/peer.h"
 
@@ -43,6 +45,17 @@ class Cgal : public Peer {
   bool validInputOnly() const override { return true; }
 
   std::unique_ptr<Prepared> prepare(const Region& region) const override {
+    // CGAL 5.5's line intersection trusts an interval filter whose degree-3 numerators overflow
+    // to infinity near 2^341 and then dereferences an empty result (a segmentation fault; the
+    // oracle works around it in robust_segment_traits.h). Refused well before that.
+    for (const Ring& ring : region) {
+      for (const Point& p : ring) {
+        if (std::abs(p.x) > 0x1p300 || std::abs(p.y) > 0x1p300) {
+          throw PeerRefusal("cgal refuses: a coordinate above 2^300 (about 2e90) would overflow CGAL 5.5's interval "
+                            "filter in segment intersections and crash it");
+        }
+      }
+    }
     const PolygonsWithHoles pwh = toPolygonsWithHoles(region);
     if (pwh.refusal) throw PeerRefusal("cgal refuses: " + *pwh.refusal);
     auto out = std::make_unique<CgalOperand>();

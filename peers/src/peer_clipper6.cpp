@@ -64,6 +64,8 @@ class Clipper6 : public Peer {
       clipper.AddPaths(toPaths(a), ClipperLib::ptSubject, true);
       clipper.AddPaths(toPaths(b), ClipperLib::ptClip, true);
       ClipperLib::Paths out;
+      // Clipper 6.4.2 reports failure when it has no edges at all; op(empty, empty) is empty.
+      if (a.empty() && b.empty()) return out;
       if (!clipper.Execute(type, out, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd)) {
         throw ClipFailure("Clipper 6.4.2 reported failure");
       }

@@ -84,10 +84,15 @@ check "--threads 1 and 2: the same answer" cmp -s "$TMP/t1.wkt" "$TMP/t2.wkt"
 "$BIN/ghclip" --op union --threads many "$TMP/cs.wkt" "$TMP/cc.wkt" 2>/dev/null >/dev/null
 check "--threads many: exit 2" test $? -eq 2
 
-# ghcheck: pass (0), fail (1), bad input (2); --expected writes the exact answer.
-"$BIN/ghcheck" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/r.wkt" >"$TMP/v.txt"
+# ghcheck: pass (0), fail (1), bad input (2); --expected writes the exact answer. The pentagram's
+# answer crosses itself: its OGC layout adds nodes rounded by GEOS (up to an ulp beyond a
+# faithful rounding: --ulps 2), its raw rings add nothing.
+"$BIN/ghcheck" --op intersection --ulps 2 "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/r.wkt" >"$TMP/v.txt"
 check "ghcheck passes ghclip's answer" test $? -eq 0
 check "ghcheck prints the verdict" grep -q '^verdict: pass' "$TMP/v.txt"
+"$BIN/ghclip" --op intersection --layout rings "$EX/pentagram.wkt" "$EX/half_square.wkt" -o "$TMP/raw.wkt"
+"$BIN/ghcheck" --op intersection "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/raw.wkt" >/dev/null
+check "ghcheck passes the raw rings at one ulp" test $? -eq 0
 "$BIN/ghcheck" --op union "$EX/pentagram.wkt" "$EX/half_square.wkt" "$TMP/r.wkt" --json \
   --svg "$TMP/wrong.svg" >"$TMP/v.json"
 check "ghcheck fails a confused operation" test $? -eq 1
@@ -125,6 +130,74 @@ done
 check "exact_speed, empty filter: exit 2" test $? -eq 2
 check "exact_speed, empty filter: the reason on stderr" grep -q "matched" "$TMP/es.err"
 check "exact_speed, empty filter: no report" test ! -e "$TMP/speed.md"
+
+# Output files as users expect (issue 18): FIFOs, devices and links written, never replaced;
+# every write error exit 2 with one line naming the path, and no file left behind.
+S="$EX/pentagram.wkt"
+C="$EX/half_square.wkt"
+mkfifo "$TMP/fifo"
+cat "$TMP/fifo" >"$TMP/from-fifo" &
+reader=$!
+"$BIN/ghclip" --op intersection "$S" "$C" -o "$TMP/fifo"
+check "fifo: exit 0" test $? -eq 0
+wait "$reader"
+check "fifo: still a FIFO" test -p "$TMP/fifo"
+check "fifo: the answer came through" grep -q '^MULTIPOLYGON' "$TMP/from-fifo"
+echo old >"$TMP/target.wkt"
+ln -s "$TMP/target.wkt" "$TMP/link.wkt"
+"$BIN/ghclip" --op intersection "$S" "$C" -o "$TMP/link.wkt"
+check "symlink: still a link" test -L "$TMP/link.wkt"
+check "symlink: its target replaced" grep -q '^MULTIPOLYGON' "$TMP/target.wkt"
+"$BIN/ghclip" --op intersection "$S" "$C" -o /dev/full 2>"$TMP/full.err"
+check "-o /dev/full: exit 2" test $? -eq 2
+check "-o /dev/full: one line naming it" test "$(grep -c /dev/full "$TMP/full.err")" -eq 1
+check "-o /dev/full: still a device" test -c /dev/full
+"$BIN/ghclip" --op intersection "$S" "$C" >/dev/full 2>"$TMP/stdout-full.err"
+check "stdout full: exit 2" test $? -eq 2
+"$BIN/ghclip" --op intersection "$S" "$C" -o "$TMP/answer.wkt" --svg "$TMP/no/such/dir/pic.svg" 2>"$TMP/svg.err"
+check "failing --svg: exit 2" test $? -eq 2
+check "failing --svg: names the path" grep -q "no/such/dir/pic.svg" "$TMP/svg.err"
+check "failing --svg: no -o file left" test ! -e "$TMP/answer.wkt"
+check "failing --svg: no temporary left" test -z "$(ls -A "$TMP" | grep ghclip-)"
+mkdir "$TMP/readonly" && chmod 555 "$TMP/readonly"
+if [[ $(id -u) -ne 0 ]]; then  # root writes anywhere
+  "$BIN/ghclip" --op intersection "$S" "$C" -o "$TMP/readonly/a.wkt" 2>/dev/null
+  check "unwritable directory: exit 2" test $? -eq 2
+fi
+"$BIN/ghclip" --op intersection "$S" "$C" -o "$TMP" 2>/dev/null
+check "a directory as -o: exit 2" test $? -eq 2
+# The layouts and empty answers: MULTIPOLYGON EMPTY, read back by our own readers too.
+printf 'POLYGON((10 10,11 10,11 11,10 10))' >"$TMP/far.wkt"
+"$BIN/ghclip" --op intersection "$S" "$TMP/far.wkt" -o "$TMP/empty.wkt"
+check "empty answer: MULTIPOLYGON EMPTY" grep -qx 'MULTIPOLYGON EMPTY' "$TMP/empty.wkt"
+"$BIN/ghclip" --op union "$TMP/empty.wkt" "$TMP/far.wkt" >/dev/null
+check "MULTIPOLYGON EMPTY reads back" test $? -eq 0
+"$BIN/ghclip" --op intersection "$S" "$C" --layout nonsense 2>/dev/null
+check "--layout nonsense: exit 2" test $? -eq 2
+# Z and M: tagged, read (x and y used); untagged 3-number points refused.
+printf 'POLYGON Z((0 0 5,1 0 5,1 1 5,0 0 5))' >"$TMP/z.wkt"
+"$BIN/ghclip" --op union "$TMP/z.wkt" "$TMP/far.wkt" -o "$TMP/z.out"
+check "POLYGON Z: read" grep -q '0 0,1 0,1 1' "$TMP/z.out"
+printf 'POLYGON((0 0 5,1 0 5,1 1 5,0 0 5))' >"$TMP/xyz.wkt"
+"$BIN/ghclip" --op union "$TMP/xyz.wkt" "$TMP/far.wkt" 2>"$TMP/xyz.err" >/dev/null
+check "untagged XYZ: exit 2" test $? -eq 2
+check "untagged XYZ: says why" grep -q "3 coordinates" "$TMP/xyz.err"
+# Every tool refuses what the clip refuses; peers do not crash on what it accepts.
+printf 'POLYGON((0 0,1e308 0,0 1,0 0))' >"$TMP/e308.wkt"
+"$BIN/ghcheck" --op union "$TMP/e308.wkt" "$C" "$C" 2>/dev/null >/dev/null
+check "ghcheck refuses 1e308: exit 2" test $? -eq 2
+"$BIN/ghclip" --peer clipper6 --op union "$TMP/e308.wkt" "$C" 2>/dev/null >/dev/null
+check "clipper6 peer refuses 1e308: exit 2" test $? -eq 2
+printf 'MULTIPOLYGON EMPTY' >"$TMP/none.wkt"
+"$BIN/ghclip" --peer clipper6 --op union "$TMP/none.wkt" "$TMP/none.wkt" -o "$TMP/none.out"
+check "clipper6 peer, both empty: exit 0" test $? -eq 0
+printf 'POLYGON((1e150 1e150,2e150 1e150,2e150 3e150,1e150 1e150))' >"$TMP/big.wkt"
+"$BIN/ghclip" --peer cgal --op union "$TMP/big.wkt" "$C" 2>"$TMP/cgal.err" >/dev/null
+check "cgal peer at 1e150: refused, exit 2 (not a crash)" test $? -eq 2
+for tool in ghclip ghcheck ghgen; do
+  "$BIN/$tool" --version >"$TMP/version.out"
+  check "$tool --version" grep -q "$tool [0-9]" "$TMP/version.out"
+done
 
 echo "$passes passed, $fails failed"
 test "$fails" -eq 0

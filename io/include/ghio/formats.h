@@ -2,28 +2,38 @@
 //
 // Readers pool every ring of every polygon into one region under the even-odd rule: OGC's
 // shell/hole structure is not needed (a hole is a ring inside another ring) and is not checked.
-// Writers emit one polygon per ring (MULTIPOLYGON / GeoJSON MultiPolygon), closed as WKT
-// requires; read back with these readers, that is the same region.
+// Writers emit a MultiPolygon in one of two layouts: `Ogc` (the default of the tools), polygons
+// with holes that GEOS calls valid (ogc_layout.h), or `Rings`, one polygon per ring, the raw
+// Greiner-Hormann rings, which only an even-odd reader reads right. Either reads back with these
+// readers as the same region. An empty answer is MULTIPOLYGON EMPTY / an empty MultiPolygon.
+// WKT may carry Z, M or ZM (ignored); untagged 3-number points are refused.
 // Bad text throws gh::InvalidInput with a one-line message.
 #pragma once
 
 #include <string>
 #include <string_view>
 
+#include <vector>
+
+#include "ghclip/polygons_with_holes.h"
 #include "ghclip/region.h"
+#include "ghio/output_files.h"
 
 namespace gh::io {
 
 enum class Format { Wkt, GeoJson };
+enum class Layout { Ogc, Rings };
 
 Region readWkt(std::string_view text);
 Region readGeoJson(std::string_view text);
 // GeoJSON when the first non-blank character is '{', WKT otherwise.
 Region readAuto(std::string_view text);
 
-std::string writeWkt(const Region& region);
+std::string writeWkt(const Region& region);  // one polygon per ring
 std::string writeGeoJson(const Region& region);
-std::string write(const Region& region, Format format);
+std::string writeWkt(const std::vector<PolygonWithHoles>& polygons);
+std::string writeGeoJson(const std::vector<PolygonWithHoles>& polygons);
+std::string write(const Region& region, Format format, Layout layout = Layout::Rings);
 // A FeatureCollection of two features, {"name": "subject"} and {"name": "clip"}.
 std::string writeGeoJsonPair(const Region& subject, const Region& clip);
 // Reads a pair written by ghgen: two WKT lines, or a two-feature FeatureCollection.
@@ -35,8 +45,5 @@ RegionPair readPair(std::string_view text);
 // Reads a whole file ("-" is standard input) as text; InvalidInput if it cannot be read.
 std::string readText(const std::string& path);
 
-// Writes text to path atomically (temporary file, then rename), so a failure leaves no
-// half-written file; "-" writes standard output.
-void writeText(const std::string& path, const std::string& text);
 
 }  // namespace gh::io
