@@ -80,6 +80,9 @@ step "exact vs naive on 10^5 degenerate cases -> results/exact-degenerate.md (ab
 step "what exactness costs: exact vs naive on the paper's workload -> results/exact-speed.md (under a minute)"
 "$BIN/exact_speed" results/exact-speed.md >results/exact-speed.log 2>&1 || { tail -20 results/exact-speed.log; exit 1; }
 
+step "I/O speed against GEOS's readers and writers, 10^6 vertices -> results/io.md (about a minute)"
+"$BIN/io_speed" results/io.md >results/io-speed.log 2>&1 || { tail -20 results/io-speed.log; exit 1; }
+
 step "peak memory of a clip per crossing -> results/memory.md (under a minute)"
 "$BIN/clip_memory" results/memory.md
 

@@ -35,7 +35,6 @@ struct Staged {
   std::string path, target, temporary;
 };
 
-std::string withNewline(const std::string& text) { return text + '\n'; }
 
 // Where a regular (or new) file's bytes go: the symbolic link's target, if path is a link.
 std::string resolvedTarget(const std::string& path) {
@@ -67,6 +66,7 @@ Staged stage(const std::string& path, const std::string& text) {
     }
     if (::fchmod(fd, mode) != 0) fail(path, errno);
     writeAll(fd, path, text);
+    writeAll(fd, path, "\n");
   } catch (...) {
     ::close(fd);
     ::unlink(temporary.c_str());
@@ -84,12 +84,14 @@ void writeDirect(const std::string& path, const std::string& text) {
   if (path == "-") {
     std::cout.flush();
     writeAll(STDOUT_FILENO, path, text);
+    writeAll(STDOUT_FILENO, path, "\n");
     return;
   }
   const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
   if (fd < 0) fail(path, errno);
   try {
     writeAll(fd, path, text);
+    writeAll(fd, path, "\n");
   } catch (...) {
     ::close(fd);
     throw;
@@ -121,10 +123,10 @@ void OutputFiles::commit() {
       if (isDirect(o.path)) {
         direct.push_back(&o);
       } else {
-        staged.push_back(stage(o.path, withNewline(o.text)));
+        staged.push_back(stage(o.path, o.text));
       }
     }
-    for (const Output* o : direct) writeDirect(o->path, withNewline(o->text));
+    for (const Output* o : direct) writeDirect(o->path, o->text);
     for (std::size_t i = 0; i < staged.size(); ++i) {
       if (::rename(staged[i].temporary.c_str(), staged[i].target.c_str()) != 0) {
         const int error = errno;
