@@ -314,5 +314,26 @@ TEST(LocalTolerance, AreaIntervalsContainTheExactArea) {
   }
 }
 
+// The deep-run failure (exact, swap_xy, grid): xor of two disjoint triangles, once as
+// given and once with x and y swapped, is both rings unchanged, area exactly 26/5 both times;
+// the uncertified sums said 5.1999999999999993 and 5.2000000000000002 with no room between.
+TEST(LocalTolerance, SwappedDisjointXorHasOneCertifiedArea) {
+  const Region s = io::readWkt("MULTIPOLYGON(((3 0,0 2,0 0,3 0)))");
+  const Region c = io::readWkt("MULTIPOLYGON(((1 8,0 5,2 5,0 3,1 8)))");
+  auto swapXY = [](Region r) {
+    for (Ring& ring : r) {
+      for (Point& p : ring) std::swap(p.x, p.y);
+    }
+    return r;
+  };
+  const Region plain = clip(s, c, Op::Xor), swapped = clip(swapXY(s), swapXY(c), Op::Xor);
+  const auto a = oracle::exactCheck(plain, {}, Op::Union, {}, {false, false, false});
+  const auto b = oracle::exactCheck(swapped, {}, Op::Union, {}, {false, false, false});
+  EXPECT_LE(std::abs(a.expectedArea - b.expectedArea), a.areaUncertainty + b.areaUncertainty);
+  EXPECT_LE(std::abs(a.expectedArea - 5.2), a.areaUncertainty + 1e-15);
+  EXPECT_EQ(oracle::exactArea(plain).rational, "26/5");
+  EXPECT_EQ(oracle::exactArea(swapped).rational, "26/5");
+}
+
 }  // namespace
 }  // namespace gh
