@@ -275,39 +275,62 @@ int run(int argc, char** argv) {
     }
   }
 
-  // The heat map: share of correct answers (exact or rounding-level) over all operations.
+  // The heat map, in tiers a reader can trust: the colour is the worst tier in the cell (gross
+  // errors, then failures to answer, then errors beyond rounding but within 1e-6 relative, then
+  // refusals and cannot-judge, else all correct); the label is the share of correct answers
+  // (exact or rounding-level) over all five operations and, below it, the largest other tier.
   std::ostringstream data;
   for (std::size_t row = 0; row < std::size(kClasses); ++row) {
     for (std::size_t col = 0; col < methods.size(); ++col) {
-      int correct = 0, total = 0;
+      Cell sum;
       for (Op op : kAllOps) {
         const auto& byMethod = cells[op][kClasses[row].name];
         const auto it = byMethod.find(methods[col].name);
         if (it == byMethod.end()) continue;
-        correct += it->second.correct(), total += it->second.total;
+        for (Verdict v : kVerdicts) sum.counts[v] += it->second.count(v);
+        sum.total += it->second.total;
       }
-      const double share = total ? 100.0 * correct / total : std::nan("");
-      data << col << ' ' << row << ' ' << (total ? fmt(share, 4) : "NaN") << " \""
-           << (total ? fmt(std::floor(share), 3) : "n/a") << "\"\n";
+      if (sum.total == 0) {
+        data << col << ' ' << row << " NaN \"n/a\"\n";
+        continue;
+      }
+      const int gross = sum.count(Verdict::Gross);
+      const int failed = sum.count(Verdict::Threw) + sum.count(Verdict::Crashed) + sum.count(Verdict::TimedOut);
+      const int beyond = sum.count(Verdict::Beyond);
+      const int notAnswered = sum.count(Verdict::Refused) + sum.count(Verdict::Unjudged);
+      const int tier = gross ? 0 : failed ? 1 : beyond ? 2 : notAnswered ? 3 : 4;
+      auto percent = [&](int n) { return fmt(std::floor(100.0 * n / sum.total), 3); };
+      std::string detail;
+      const std::pair<int, const char*> others[] = {{gross, "gross"}, {failed, "failed"}, {beyond, "<=1e-6"},
+                                                    {notAnswered, "refused"}};
+      int largest = 0;
+      for (const auto& [n, label] : others) {
+        if (n > largest) largest = n, detail = percent(n) + "% " + label;
+      }
+      data << col << ' ' << row << ' ' << tier << " \"" << percent(sum.correct()) << "%"
+           << (detail.empty() ? "" : "\\n" + detail) << "\"\n";
     }
     data << "\n";
   }
   const std::string plotBase = (out / "robustness").string();
   io::writeText(plotBase + ".dat", data.str());
   std::ostringstream gp;
-  gp << "set terminal svg size " << 160 + 110 * methods.size() << "," << 140 + 28 * std::size(kClasses)
+  gp << "set terminal svg size " << 260 + 120 * methods.size() << "," << 140 + 34 * std::size(kClasses)
      << " font 'sans,12' background '#ffffff'\n"
      << "set output '" << plotBase << ".svg'\n"
-     << "set title 'Correct answers (exact or rounding-level), % of cases, all five operations'\n"
+     << "set title 'Worst tier per cell (colour); correct answers, % of cases over all five operations (label)'\n"
      << "set xrange [-0.5:" << methods.size() - 0.5 << "]\nset yrange [" << std::size(kClasses) - 0.5 << ":-0.5]\n"
-     << "set palette defined (0 '#b2182b', 50 '#f4a582', 90 '#fddbc7', 99 '#d1e5f0', 100 '#2166ac')\n"
-     << "set cbrange [0:100]\nset cblabel 'correct %'\nset xtics (";
+     << "set palette maxcolors 5\n"
+     << "set palette defined (0 '#b2182b', 1 '#7f7f7f', 2 '#fddbc7', 3 '#d9d9d9', 4 '#2166ac')\n"
+     << "set cbrange [-0.5:4.5]\n"
+     << "set cbtics ('gross (> 1e-6 relative)' 0, 'threw, crashed or hung' 1, 'beyond rounding, <= 1e-6' 2, "
+        "'refused or cannot judge' 3, 'all exact or rounding' 4)\nset xtics (";
   for (std::size_t col = 0; col < methods.size(); ++col) gp << (col ? ", " : "") << "'" << methods[col].name << "' " << col;
   gp << ") scale 0\nset ytics (";
   for (std::size_t row = 0; row < std::size(kClasses); ++row) gp << (row ? ", " : "") << "'" << kClasses[row].name << "' " << row;
   gp << ") scale 0\nunset key\nset datafile missing 'NaN'\n"
      << "plot '" << plotBase << ".dat' using 1:2:(0.5):(0.5):3 with boxxyerror fc palette fs solid 1.0 noborder, "
-     << "'' using 1:2:4 with labels font 'sans,10'\n";
+     << "'' using 1:2:4 with labels font 'sans,9'\n";
   io::writeText(plotBase + ".gp", gp.str());
   if (std::system(("gnuplot '" + plotBase + ".gp'").c_str()) != 0) throw std::runtime_error("gnuplot failed");
   fs::remove(plotBase + ".gp");
