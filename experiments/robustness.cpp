@@ -14,11 +14,13 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "common/isolated_run.h"
 #include "common/judge.h"
 #include "common/provenance.h"
+#include "ghclip/errors.h"
 #include "ghclip/measure.h"
 #include "ghio/formats.h"
 #include "ghio/svg.h"
@@ -167,6 +169,129 @@ std::string cellText(const Cell& cell) {
   return text;
 }
 
+using Cells = std::map<Op, std::map<std::string, std::map<std::string, Cell>>>;  // [op][class][method]
+
+// Regions exactly as they are (every vertex, every double: nlohmann-json round-trips them).
+nlohmann::json regionJson(const Region& region) {
+  nlohmann::json rings = nlohmann::json::array();
+  for (const Ring& ring : region) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const Point& p : ring) points.push_back({p.x, p.y});
+    rings.push_back(std::move(points));
+  }
+  return rings;
+}
+Region regionOf(const nlohmann::json& rings) {
+  Region region;
+  for (const nlohmann::json& ring : rings) {
+    Ring r;
+    for (const nlohmann::json& p : ring) r.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
+    region.push_back(std::move(r));
+  }
+  return region;
+}
+
+// Shards: the raw cells of a part of the seeds, with each cell's smallest failing case whole.
+nlohmann::json shardJson(const Cells& cells, int cases, double seconds, int shard, int shards) {
+  nlohmann::json j;
+  j["shard"] = shard;
+  j["shards"] = shards;
+  j["cases_per_class"] = cases;
+  j["seconds"] = seconds;
+  j["cells"] = nlohmann::json::array();
+  for (const auto& [op, byClass] : cells) {
+    for (const auto& [cls, byMethod] : byClass) {
+      for (const auto& [method, cell] : byMethod) {
+        nlohmann::json c{{"op", std::string(name(op))}, {"class", cls}, {"method", method}, {"total", cell.total},
+                         {"worst_relative", cell.worstRelative}, {"counts", nlohmann::json::object()}};
+        for (const auto& [v, n] : cell.counts) c["counts"][key(v)] = n;
+        if (cell.hasFailure) {
+          const Case& f = cell.smallest;
+          c["smallest"] = {{"seed", f.seed},          {"size", f.size},
+                           {"relative", f.relative},  {"message", f.message},
+                           {"verdict", key(f.verdict)}, {"subject", regionJson(f.subject)},
+                           {"clip", regionJson(f.clip)}, {"result", regionJson(f.result)}};
+        }
+        j["cells"].push_back(std::move(c));
+      }
+    }
+  }
+  return j;
+}
+
+struct ShardFile {
+  int shard = 1, shards = 1;
+  int cases = 0;
+  double seconds = 0;
+  Cells cells;
+};
+
+ShardFile readShard(const std::string& file, const std::vector<Method>& methods) {
+  ShardFile s;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(io::readText(file));
+    s.shard = j.at("shard").get<int>(), s.shards = j.at("shards").get<int>();
+    s.cases = j.at("cases_per_class").get<int>();
+    s.seconds = j.at("seconds").get<double>();
+    auto verdictOf = [&](const std::string& text) {
+      for (Verdict v : kVerdicts) {
+        if (text == key(v)) return v;
+      }
+      throw tools::BadInput(file + ": unknown verdict '" + text + "'");
+    };
+    for (const nlohmann::json& c : j.at("cells")) {
+      const auto op = parseOp(c.at("op").get<std::string>());
+      const std::string method = c.at("method").get<std::string>();
+      if (!op || std::none_of(methods.begin(), methods.end(), [&](const Method& m) { return m.name == method; })) {
+        throw tools::BadInput(file + ": unknown operation or method");
+      }
+      Cell& cell = s.cells[*op][c.at("class").get<std::string>()][method];
+      cell.total = c.at("total").get<int>();
+      cell.worstRelative = c.at("worst_relative").get<double>();
+      for (const auto& [v, n] : c.at("counts").items()) cell.counts[verdictOf(v)] = n.get<int>();
+      if (c.contains("smallest")) {
+        const nlohmann::json& f = c["smallest"];
+        Case& k = cell.smallest;
+        k.seed = f.at("seed").get<int>(), k.size = f.at("size").get<std::size_t>();
+        k.relative = f.at("relative").get<double>(), k.message = f.at("message").get<std::string>();
+        k.verdict = verdictOf(f.at("verdict").get<std::string>());
+        k.subject = regionOf(f.at("subject")), k.clip = regionOf(f.at("clip")), k.result = regionOf(f.at("result"));
+        cell.hasFailure = true;
+      }
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw tools::BadInput(file + ": not a robustness shard (" + e.what() + ")");
+  } catch (const gh::InvalidInput& e) {
+    throw tools::BadInput(file + ": " + e.what());
+  }
+  return s;
+}
+
+// The smallest failing case of a cell as one run picks it: the smallest input, then the larger
+// error, then the earlier seed.
+bool smallerFailure(const Case& a, const Case& b) {
+  if (a.size != b.size) return a.size < b.size;
+  if (a.relative != b.relative) return a.relative > b.relative;
+  return a.seed < b.seed;
+}
+
+void mergeInto(Cells& into, const Cells& from) {
+  for (const auto& [op, byClass] : from) {
+    for (const auto& [cls, byMethod] : byClass) {
+      for (const auto& [method, cell] : byMethod) {
+        Cell& c = into[op][cls][method];
+        c.total += cell.total;
+        for (const auto& [v, n] : cell.counts) c.counts[v] += n;
+        c.worstRelative = std::max(c.worstRelative, cell.worstRelative);
+        if (cell.hasFailure && (!c.hasFailure || smallerFailure(cell.smallest, c.smallest))) {
+          c.smallest = cell.smallest;
+          c.hasFailure = true;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 int run(int argc, char** argv) {
@@ -179,19 +304,55 @@ int run(int argc, char** argv) {
   app.add_option("--cases", cases, "cases per class (default 25, 200 with --full)")->check(CLI::PositiveNumber);
   app.add_flag("--full", full, "the large study");
   app.add_option("--timeout", timeout, "seconds before a case is killed")->check(CLI::PositiveNumber);
+  std::string shardText;
+  std::vector<std::string> mergeFiles;
+  app.add_option("--shard", shardText,
+                 "K/M: run only seeds s with (s - 1) mod M = K - 1 and write OUT_DIR/robustness-shard-K-of-M.json "
+                 "instead of the report (run every K = 1..M, on any machines, then --merge)");
+  app.add_option("--merge", mergeFiles, "shard JSON files: write the report of all of them together")
+      ->excludes("--shard");
   if (const auto exitCode = tools::parseCommandLine(app, "robustness", argc, argv)) return *exitCode;
   if (cases == 0) cases = full ? 200 : 25;
+  int shard = 1, shards = 1;
+  if (!shardText.empty()) {
+    char slash = 0;
+    std::istringstream in(shardText);
+    if (!(in >> shard >> slash >> shards) || slash != '/' || !in.eof() || shards < 1 || shard < 1 || shard > shards) {
+      return tools::usageError("robustness", "--shard wants K/M with 1 <= K <= M, got '" + shardText + "'");
+    }
+  }
   const fs::path out = outDir;
   const std::vector<Method> methods = allMethods();
   IsolationLimits limits;
   limits.seconds = timeout;
   IsolatedRunner runner(methods, limits);
 
-  // cells[op][class][method]
-  std::map<Op, std::map<std::string, std::map<std::string, Cell>>> cells;
+  Cells cells;
   const auto start = std::chrono::steady_clock::now();
+  double seconds = 0;
+  if (!mergeFiles.empty()) {
+    cases = 0;
+    std::set<int> seen;
+    int of = 0;
+    for (const std::string& file : mergeFiles) {
+      const ShardFile s = readShard(file, methods);
+      if (cases != 0 && (s.cases != cases || s.shards != of)) {
+        throw tools::BadInput(file + ": a shard of another study (" + std::to_string(s.cases) + " cases in " +
+                              std::to_string(s.shards) + " shards, not " + std::to_string(cases) + " in " + std::to_string(of) + ")");
+      }
+      if (!seen.insert(s.shard).second) throw tools::BadInput(file + ": shard " + std::to_string(s.shard) + " given twice");
+      cases = s.cases, of = s.shards;
+      seconds += s.seconds;
+      mergeInto(cells, s.cells);
+    }
+    if (static_cast<int>(seen.size()) != of) {
+      throw tools::BadInput("--merge: " + std::to_string(seen.size()) + " of " + std::to_string(of) + " shards given");
+    }
+  }
   for (const InputClass& k : kClasses) {
+    if (!mergeFiles.empty()) break;
     for (int i = 1; i <= cases; ++i) {
+      if ((i - 1) % shards != shard - 1) continue;
       const std::size_t n = k.minN + static_cast<std::size_t>(i) % (k.maxN - k.minN + 1);
       const work::Workload w = work::generate(k.name, n, static_cast<std::uint64_t>(i));
       const std::size_t size = vertexCount(w.subject) + vertexCount(w.clip);
@@ -232,7 +393,14 @@ int run(int argc, char** argv) {
     std::cerr << "[robustness] " << k.name << " done ("
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)\n";
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (mergeFiles.empty()) seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!shardText.empty()) {
+    fs::create_directories(out);
+    const fs::path file = out / ("robustness-shard-" + std::to_string(shard) + "-of-" + std::to_string(shards) + ".json");
+    io::writeText(file.string(), shardJson(cells, cases, seconds, shard, shards).dump(1));
+    std::cout << "wrote " << file.string() << "\n";
+    return 0;
+  }
 
   // Counterexamples: the smallest failing case of every failing cell, with the wrong faces.
   std::map<std::string, std::map<std::string, std::vector<std::string>>> failingCells;  // method -> verdict kind
