@@ -58,35 +58,35 @@ void bytes(benchmark::State& s, std::size_t n) {
 
 void registerAll() {
   auto add = [](const char* name, auto body) {
-    benchmark::RegisterBenchmark(name, body)->Arg(static_cast<long>(kVertices))->Unit(benchmark::kMillisecond)->Repetitions(kRepetitions)->Iterations(1);
+    benchmark::RegisterBenchmark(name, body)->Arg(static_cast<long>(kVertices))->Unit(benchmark::kMillisecond)->Repetitions(kRepetitions)->MinTime(0.5);
   };
-  add("read/wkt/ghclip", [](benchmark::State& s) {
+  add("read-wkt/ghclip", [](benchmark::State& s) {
     for (auto _ : s) benchmark::DoNotOptimize(io::readWkt(texts().wkt));
     bytes(s, texts().wkt.size());
   });
-  add("read/wkt/geos", [](benchmark::State& s) {
+  add("read-wkt/geos", [](benchmark::State& s) {
     GeosHandle g;
     GEOSWKTReader* r = GEOSWKTReader_create_r(g.h);
     for (auto _ : s) GEOSGeom_destroy_r(g.h, GEOSWKTReader_read_r(g.h, r, texts().wkt.c_str()));
     GEOSWKTReader_destroy_r(g.h, r);
     bytes(s, texts().wkt.size());
   });
-  add("read/geojson/ghclip", [](benchmark::State& s) {
+  add("read-geojson/ghclip", [](benchmark::State& s) {
     for (auto _ : s) benchmark::DoNotOptimize(io::readGeoJson(texts().geojson));
     bytes(s, texts().geojson.size());
   });
-  add("read/geojson/geos", [](benchmark::State& s) {
+  add("read-geojson/geos", [](benchmark::State& s) {
     GeosHandle g;
     GEOSGeoJSONReader* r = GEOSGeoJSONReader_create_r(g.h);
     for (auto _ : s) GEOSGeom_destroy_r(g.h, GEOSGeoJSONReader_readGeometry_r(g.h, r, texts().geojson.c_str()));
     GEOSGeoJSONReader_destroy_r(g.h, r);
     bytes(s, texts().geojson.size());
   });
-  add("write/wkt/ghclip", [](benchmark::State& s) {
+  add("write-wkt/ghclip", [](benchmark::State& s) {
     for (auto _ : s) benchmark::DoNotOptimize(io::writeWkt(texts().subject));
     bytes(s, texts().wkt.size());
   });
-  add("write/wkt/geos", [](benchmark::State& s) {
+  add("write-wkt/geos", [](benchmark::State& s) {
     GeosHandle g;
     GEOSWKTReader* r = GEOSWKTReader_create_r(g.h);
     GEOSGeometry* geometry = GEOSWKTReader_read_r(g.h, r, texts().wkt.c_str());
@@ -99,11 +99,11 @@ void registerAll() {
     GEOSWKTReader_destroy_r(g.h, r);
     bytes(s, texts().wkt.size());
   });
-  add("write/geojson/ghclip", [](benchmark::State& s) {
+  add("write-geojson/ghclip", [](benchmark::State& s) {
     for (auto _ : s) benchmark::DoNotOptimize(io::writeGeoJson(texts().subject));
     bytes(s, texts().geojson.size());
   });
-  add("write/ogc-wkt/ghclip", [](benchmark::State& s) {  // the layout included
+  add("write-ogc-wkt/ghclip", [](benchmark::State& s) {  // the layout included
     for (auto _ : s) benchmark::DoNotOptimize(io::write(texts().answer, io::Format::Wkt, io::Layout::Ogc));
     bytes(s, texts().answerWkt.size());
   });
@@ -118,6 +118,7 @@ int run(int argc, char** argv) {
   const std::string out = argv[1];
   const std::string json = std::filesystem::path(out).replace_extension(".json").string();
   registerAll();
+  texts();  // generated and clipped before any timing
   std::vector<char*> args{argv[0]};
   for (int i = 2; i < argc; ++i) args.push_back(argv[i]);
   std::string interleave = "--benchmark_enable_random_interleaving=true", outFlag = "--benchmark_out=" + json,
@@ -148,11 +149,11 @@ int run(int argc, char** argv) {
     md << "| " << what << " | " << reportNumber(a) << " | " << (b > 0 ? reportNumber(b) : "–") << " | "
        << (b > 0 ? reportNumber(a / b) : "–") << " |\n";
   };
-  row("read WKT", "read/wkt/ghclip", "read/wkt/geos", t.wkt.size());
-  row("read GeoJSON", "read/geojson/ghclip", "read/geojson/geos", t.geojson.size());
-  row("write WKT", "write/wkt/ghclip", "write/wkt/geos", t.wkt.size());
-  row("write GeoJSON", "write/geojson/ghclip", "", t.geojson.size());
-  row("write the union's OGC layout as WKT (layout included)", "write/ogc-wkt/ghclip", "", t.answerWkt.size());
+  row("read WKT", "read-wkt/ghclip", "read-wkt/geos", t.wkt.size());
+  row("read GeoJSON", "read-geojson/ghclip", "read-geojson/geos", t.geojson.size());
+  row("write WKT", "write-wkt/ghclip", "write-wkt/geos", t.wkt.size());
+  row("write GeoJSON", "write-geojson/ghclip", "", t.geojson.size());
+  row("write the union's OGC layout as WKT (layout included)", "write-ogc-wkt/ghclip", "", t.answerWkt.size());
   io::writeText(out, md.str());
   std::cout << "wrote " << out << "\n";
   return 0;
