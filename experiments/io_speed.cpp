@@ -21,6 +21,7 @@
 
 using namespace gh;
 using namespace gh::experiments;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -31,6 +32,7 @@ constexpr std::size_t kVertices = 1000000;
 struct Texts {
   Region subject, answer;
   std::string wkt, geojson, answerWkt;
+  std::string subjectFile, clipFile, outFile;  // the pair as ghclip reads it, and where it writes
 };
 const Texts& texts() {
   static const Texts t = [] {
@@ -42,6 +44,12 @@ const Texts& texts() {
     Options o;
     x.answer = clip(w.subject, w.clip, Op::Union, o);
     x.answerWkt = io::writeWkt(x.answer);
+    const auto dir = fs::temp_directory_path();
+    x.subjectFile = (dir / "ghclip-io-speed-subject.wkt").string();
+    x.clipFile = (dir / "ghclip-io-speed-clip.wkt").string();
+    x.outFile = (dir / "ghclip-io-speed-out.wkt").string();
+    io::writeText(x.subjectFile, x.wkt);
+    io::writeText(x.clipFile, io::writeWkt(w.clip));
     return x;
   }();
   return t;
@@ -103,6 +111,27 @@ void registerAll() {
     for (auto _ : s) benchmark::DoNotOptimize(io::writeGeoJson(texts().subject));
     bytes(s, texts().geojson.size());
   });
+  // What `ghclip --variant exact --threads 1 --op union S C -o OUT` does, step by step: read and
+  // parse both files, clip, lay out and write the answer.
+  add("end-to-end/ghclip", [](benchmark::State& s) {
+    double read = 0, clipped = 0, written = 0;
+    for (auto _ : s) {
+      using Clock = std::chrono::steady_clock;
+      const auto t0 = Clock::now();
+      const Region a = io::readAuto(io::readText(texts().subjectFile)), b = io::readAuto(io::readText(texts().clipFile));
+      const auto t1 = Clock::now();
+      Options o;
+      o.threads = 1;
+      const Region r = clip(a, b, Op::Union, o);
+      const auto t2 = Clock::now();
+      io::writeText(texts().outFile, io::write(r, io::Format::Wkt, io::Layout::Ogc));
+      const auto t3 = Clock::now();
+      read += std::chrono::duration<double>(t1 - t0).count(), clipped += std::chrono::duration<double>(t2 - t1).count();
+      written += std::chrono::duration<double>(t3 - t2).count();
+    }
+    const double n = static_cast<double>(s.iterations());
+    s.counters["read_s"] = read / n, s.counters["clip_s"] = clipped / n, s.counters["write_s"] = written / n;
+  });
   add("write-ogc-wkt/ghclip", [](benchmark::State& s) {  // the layout included
     for (auto _ : s) benchmark::DoNotOptimize(io::write(texts().answer, io::Format::Wkt, io::Layout::Ogc));
     bytes(s, texts().answerWkt.size());
@@ -154,6 +183,15 @@ int run(int argc, char** argv) {
   row("write WKT", "write-wkt/ghclip", "write-wkt/geos", t.wkt.size());
   row("write GeoJSON", "write-geojson/ghclip", "", t.geojson.size());
   row("write the union's OGC layout as WKT (layout included)", "write-ogc-wkt/ghclip", "", t.answerWkt.size());
+  if (const BenchRow* e = findRow(f, "end-to-end/ghclip", static_cast<long>(kVertices))) {
+    md << "\n## End to end\n\nWhat `ghclip --variant exact --threads 1 --op union` does on the circles pair of "
+       << kVertices << " vertices per operand (" << reportNumber(static_cast<double>(t.wkt.size()) * 2 / 1e6)
+       << " MB of WKT in, the union's OGC layout out to a file): median " << reportNumber(e->medianMs / 1000)
+       << " s, of which reading " << reportNumber(counterOf(e, "read_s")) << " s, clipping "
+       << reportNumber(counterOf(e, "clip_s")) << " s and writing " << reportNumber(counterOf(e, "write_s"))
+       << " s (the largest of each over the repetitions). Target (issue 18): 1 s.\n";
+  }
+  for (const std::string& file : {t.subjectFile, t.clipFile, t.outFile}) fs::remove(file);
   io::writeText(out, md.str());
   std::cout << "wrote " << out << "\n";
   return 0;

@@ -2,6 +2,7 @@
 // round-trip form). Boost.Geometry's reader, used before, took 3x GEOS's time and read
 // "POLYGON((0 0 1, ...))" as twice as many XY points; this one knows Z, M and ZM.
 #include <cctype>
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <string>
@@ -92,6 +93,11 @@ class WktReader {
   void ring(Region& out) {
     expect('(');
     Ring r;
+    // Room for every point up to the ring's ')' at once: growing a 10^6-point ring by doubling
+    // copied it about twenty times.
+    const std::size_t close = s_.find(')', i_);
+    const std::string_view body = s_.substr(i_, close == std::string_view::npos ? std::string_view::npos : close - i_);
+    r.reserve(static_cast<std::size_t>(std::count(body.begin(), body.end(), ',')) + 1);
     do r.push_back(point());
     while (accept(','));
     expect(')');
