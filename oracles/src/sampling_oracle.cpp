@@ -56,26 +56,76 @@ bool lineDistanceAtMost(Point a, Point b, Point p, double bound) {
   return abs(exact) <= mpq_class(bound);
 }
 
-// Even-odd parity of a rightward ray from p, exactly; nullopt when p lies on an edge (on the
-// boundary, inside and outside are a convention, not an answer).
-std::optional<bool> inside(const Region& region, Point p) {
-  bool in = false;
-  for (const Ring& ring : region) {
-    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-      const Point& a = ring[i];
-      const Point& b = ring[(i + 1) % n];
+// A region's edges in horizontal bands, so that a ray test visits only the edges whose y-range
+// can hold the point's y (every other edge lies wholly above or below it and cannot count). The
+// band of a y is a monotone function of y, so an edge with ymin <= y <= ymax is always found.
+class EvenOddRegion {
+ public:
+  explicit EvenOddRegion(const Region& region) {
+    for (const Ring& ring : region) {
+      for (std::size_t i = 0, n = ring.size(); i < n; ++i) edges_.push_back({ring[i], ring[(i + 1) % n]});
+    }
+    if (edges_.empty()) return;
+    minY_ = maxY_ = edges_[0].a.y;
+    for (const Edge& e : edges_) {
+      minY_ = std::min({minY_, e.a.y, e.b.y}), maxY_ = std::max({maxY_, e.a.y, e.b.y});
+    }
+    // Bands: about one per 4 edges, fewer while long edges would be copied into too many.
+    for (bands_ = std::clamp<std::size_t>(edges_.size() / 4, 1, 4096);; bands_ /= 2) {
+      std::size_t copies = 0;
+      for (const Edge& e : edges_) copies += band(std::max(e.a.y, e.b.y)) - band(std::min(e.a.y, e.b.y)) + 1;
+      if (copies <= 16 * edges_.size() || bands_ == 1) break;
+    }
+    start_.assign(bands_ + 1, 0);
+    for (const Edge& e : edges_) {
+      for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) ++start_[k + 1];
+    }
+    for (std::size_t k = 0; k < bands_; ++k) start_[k + 1] += start_[k];
+    members_.resize(start_[bands_]);
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < edges_.size(); ++i) {
+      const Edge& e = edges_[i];
+      for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) members_[fill[k]++] = i;
+    }
+  }
+
+  // Even-odd parity of a rightward ray from p, exactly; nullopt when p lies on an edge (on the
+  // boundary, inside and outside are a convention, not an answer).
+  std::optional<bool> inside(Point p) const {
+    if (edges_.empty() || !(p.y >= minY_ && p.y <= maxY_)) return false;
+    bool in = false;
+    const std::size_t k = band(p.y);
+    for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
+      const Point& a = edges_[members_[m]].a;
+      const Point& b = edges_[members_[m]].b;
       if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
       const bool crosses = (a.y > p.y) != (b.y > p.y);
       if (!crosses && (p.x < std::min(a.x, b.x) || p.x > std::max(a.x, b.x))) continue;
+      if (crosses && p.x > std::max(a.x, b.x)) continue;  // crosses p's line left of p
       const int o = orientation(a, b, p);
       if (o == 0 && p.x >= std::min(a.x, b.x) && p.x <= std::max(a.x, b.x)) return std::nullopt;
       // The edge crosses p's horizontal line to the right of p when p is on its left going
       // upward (on its right going downward).
       if (crosses && (b.y > a.y ? o > 0 : o < 0)) in = !in;
     }
+    return in;
   }
-  return in;
-}
+
+ private:
+  struct Edge {
+    Point a, b;
+  };
+  std::size_t band(double y) const {
+    const double f = (y - minY_) / (maxY_ - minY_) * static_cast<double>(bands_);
+    if (!(f > 0)) return 0;  // also a zero height (NaN)
+    return std::min(bands_ - 1, static_cast<std::size_t>(f));
+  }
+  std::vector<Edge> edges_;
+  double minY_ = 0, maxY_ = 0;
+  std::size_t bands_ = 1;
+  std::vector<std::size_t> start_;
+  std::vector<std::uint32_t> members_;
+};
 
 // The edges of S and C, with what a point near one needs to know: how far from it a correct
 // answer may legitimately disagree. The exact oracle's rounding zone along a line of S or C
@@ -94,11 +144,15 @@ class OperandEdges {
         }
       }
     }
+    index();
   }
 
   // Whether p is within the local delta of an edge.
   bool near(Point p) {
-    for (Edge& e : edges_) {
+    if (edges_.empty()) return false;
+    const std::size_t k = cell(p.x, p.y);
+    for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
+      Edge& e = edges_[members_[m]];
       const double coarse = deltaAt(magnitude(e.a, e.b));  // a bound on e's delta
       if (p.x < std::min(e.a.x, e.b.x) - coarse || p.x > std::max(e.a.x, e.b.x) + coarse ||
           p.y < std::min(e.a.y, e.b.y) - coarse || p.y > std::max(e.a.y, e.b.y) + coarse) {
@@ -154,10 +208,59 @@ class OperandEdges {
     return largest;
   }
 
+  // A uniform grid over the edges' boxes, each widened by its coarse delta: an edge is listed
+  // in every cell its widened box meets, and a point's cell (clamped to the grid, by the same
+  // monotone function) lists every edge whose widened box holds it.
+  std::size_t axis(double v, double lo, double hi) const {
+    const double f = (v - lo) / (hi - lo) * static_cast<double>(side_);
+    if (!(f > 0)) return 0;
+    return std::min(side_ - 1, static_cast<std::size_t>(f));
+  }
+  std::size_t cell(double x, double y) const { return axis(y, y0_, y1_) * side_ + axis(x, x0_, x1_); }
+  void index() {
+    if (edges_.empty()) return;
+    struct Box {
+      double x0, x1, y0, y1;
+    };
+    std::vector<Box> boxes;
+    x0_ = y0_ = std::numeric_limits<double>::infinity(), x1_ = y1_ = -x0_;
+    for (const Edge& e : edges_) {
+      const double coarse = deltaAt(magnitude(e.a, e.b));
+      boxes.push_back({std::min(e.a.x, e.b.x) - coarse, std::max(e.a.x, e.b.x) + coarse,
+                       std::min(e.a.y, e.b.y) - coarse, std::max(e.a.y, e.b.y) + coarse});
+      x0_ = std::min(x0_, boxes.back().x0), x1_ = std::max(x1_, boxes.back().x1);
+      y0_ = std::min(y0_, boxes.back().y0), y1_ = std::max(y1_, boxes.back().y1);
+    }
+    auto copies = [&] {
+      std::size_t n = 0;
+      for (const Box& b : boxes) n += (axis(b.x1, x0_, x1_) - axis(b.x0, x0_, x1_) + 1) * (axis(b.y1, y0_, y1_) - axis(b.y0, y0_, y1_) + 1);
+      return n;
+    };
+    // About one cell per 2 edges, fewer while long edges would be copied into too many cells.
+    for (side_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(edges_.size() / 2.0)), 1, 1024);
+         side_ > 1 && copies() > 16 * edges_.size(); side_ /= 2) {
+    }
+    start_.assign(side_ * side_ + 1, 0);
+    auto forCells = [&](const Box& b, auto&& f) {
+      for (std::size_t cy = axis(b.y0, y0_, y1_), ly = axis(b.y1, y0_, y1_); cy <= ly; ++cy) {
+        for (std::size_t cx = axis(b.x0, x0_, x1_), lx = axis(b.x1, x0_, x1_); cx <= lx; ++cx) f(cy * side_ + cx);
+      }
+    };
+    for (const Box& b : boxes) forCells(b, [&](std::size_t k) { ++start_[k + 1]; });
+    for (std::size_t k = 0; k + 1 < start_.size(); ++k) start_[k + 1] += start_[k];
+    members_.resize(start_.back());
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < boxes.size(); ++i) forCells(boxes[i], [&](std::size_t k) { members_[fill[k]++] = i; });
+  }
+
   int ulps_;
   double ulpFloor_;
   double largest_ = 0;
   std::vector<Edge> edges_;
+  double x0_ = 0, x1_ = 0, y0_ = 0, y1_ = 0;
+  std::size_t side_ = 1;
+  std::vector<std::size_t> start_;
+  std::vector<std::uint32_t> members_;
 };
 
 // The check proper, on a problem at a comfortable scale; ulpFloor is the original's smallest
@@ -174,13 +277,14 @@ SampleVerdict sample(const Region& subject, const Region& clip, Op op, const Reg
                                   std::numeric_limits<double>::min()});
 
   OperandEdges operandEdges(subject, clip, options.constructionUlps, ulpFloor);
+  const EvenOddRegion inS(subject), inC(clip), inR(result);
   auto check = [&](Point p) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     if (operandEdges.near(p)) {
       ++v.skipped;
       return;
     }
-    const auto r = inside(result, p), a = inside(subject, p), b = inside(clip, p);
+    const auto r = inR.inside(p), a = inS.inside(p), b = inC.inside(p);
     if (!r || !a || !b) {
       ++v.skipped;
       return;
