@@ -132,8 +132,13 @@ int run(int argc, char** argv) {
         result = peer->clip(subject, clip, *op);
       } catch (const gh::InvalidInput&) {
         throw;  // a refusal, with its reason: exit 2
-      } catch (const std::exception& e) {
-        throw gh::ClipFailure(std::string(peer->name()) + ": " + e.what());  // named, exit 1
+      } catch (const std::exception& e) {  // named, one line, exit 1
+        std::string why = e.what();
+        for (char& c : why) {
+          if (c == '\n' || c == '\r') c = ' ';
+        }
+        std::cerr << "ghclip: " << peer->name() << " failed: " << why << std::endl;
+        return gh::tools::kExitFailed;
       }
       stats.phase1Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       stats.outputRings = result.size();

@@ -33,6 +33,9 @@ int run(int argc, char** argv) {
   app.add_option("--svg", svgPath, "also draw the pair to this SVG file");
   app.add_option("-o,--output", outPath, "output file ('-' = stdout)")->capture_default_str();
   app.add_option("--format", formatName, "wkt | geojson")->capture_default_str();
+  std::string subjectPath, clipPath;
+  app.add_option("--subject", subjectPath, "also write the subject alone to this file (ghclip's SUBJECT)");
+  app.add_option("--clip", clipPath, "also write the clip alone to this file (ghclip's CLIP)");
   if (const auto exitCode = gh::tools::parseCommandLine(app, "ghgen", argc, argv)) return *exitCode;
   if (formatName != "wkt" && formatName != "geojson") {
     return gh::tools::usageError("ghgen", "unknown --format '" + formatName + "'");
@@ -52,6 +55,9 @@ int run(int argc, char** argv) {
   }
   gh::io::OutputFiles files;
   files.add(outPath, text);
+  const auto format = formatName == "geojson" ? gh::io::Format::GeoJson : gh::io::Format::Wkt;
+  if (!subjectPath.empty()) files.add(subjectPath, gh::io::write(w.subject, format));
+  if (!clipPath.empty()) files.add(clipPath, gh::io::write(w.clip, format));
   if (!svgPath.empty()) {
     files.add(svgPath, gh::io::svgPicture({{&w.subject, "#c6dbef", "#2171b5", "subject"},
                                            {&w.clip, "#fcbba1", "#cb181d", "clip"}},

@@ -25,6 +25,10 @@ int usageError(const std::string& tool, const std::string& message) {
 
 std::optional<int> parseCommandLine(CLI::App& app, const char* tool, int argc, char** argv) {
   app.set_version_flag("--version", std::string(tool) + " " GHCLIP_VERSION);
+  if (argc <= 1 && !app.get_options([](const CLI::Option* o) { return o->get_required(); }).empty()) {
+    std::cerr << app.help();  // nothing given: the usage, as a usage error
+    return kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version

@@ -199,5 +199,15 @@ for tool in ghclip ghcheck ghgen; do
   check "$tool --version" grep -q "$tool [0-9]" "$TMP/version.out"
 done
 
+# No arguments: the usage on stderr, exit 2. ghgen writes the two operands as ghclip reads them.
+for tool in ghclip ghcheck ghgen; do
+  "$BIN/$tool" >/dev/null 2>"$TMP/noargs.err"
+  check "$tool with no arguments: exit 2" test $? -eq 2
+  check "$tool with no arguments: prints the usage" grep -q -- "--help" "$TMP/noargs.err"
+done
+"$BIN/ghgen" simple --n 12 --seed 3 -o /dev/null --subject "$TMP/gs.wkt" --clip "$TMP/gc.wkt"
+"$BIN/ghclip" --op union "$TMP/gs.wkt" "$TMP/gc.wkt" -o "$TMP/gu.wkt"
+check "ghgen --subject/--clip feed ghclip" grep -q '^MULTIPOLYGON' "$TMP/gu.wkt"
+
 echo "$passes passed, $fails failed"
 test "$fails" -eq 0
