@@ -32,7 +32,8 @@ log() { printf '[mutants] %s\n' "$*" >&2; }
 # The scratch copy: the last commit (the report names it; uncommitted changes are not tested).
 rm -rf "$SCRATCH"
 mkdir -p "$SCRATCH/src"
-git -C "$ROOT" archive --format=tar HEAD | tar -xf - -C "$SCRATCH/src"
+commit="$(git -C "$ROOT" rev-parse --short HEAD)"
+git -C "$ROOT" archive --format=tar "$commit" | tar -xf - -C "$SCRATCH/src"
 SRC="$SCRATCH/src" B="$SCRATCH/build"
 cmake -S "$SRC" -B "$B" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 
@@ -97,7 +98,6 @@ if [[ -f "$HERE/equivalent.tsv" ]]; then
   done <"$HERE/equivalent.tsv"
 fi
 
-commit="$(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo unknown)"
 rows=() killed=0 survived=0 counted=0
 while IFS=$'\t' read -r id patchFile what; do
   [[ -z "$id" || "$id" == \#* ]] && continue
