@@ -16,6 +16,7 @@
 #include "ghoracle/sampling_oracle.h"
 #include "stats_json.h"
 #include "verdict_json.h"
+#include "peer_in_child.h"
 #include "tool_main.h"
 
 namespace {
@@ -128,18 +129,14 @@ int run(int argc, char** argv) {
   try {
     if (peer) {
       const auto start = std::chrono::steady_clock::now();
-      try {
-        result = peer->clip(subject, clip, *op);
-      } catch (const gh::InvalidInput&) {
-        throw;  // a refusal, with its reason: exit 2
-      } catch (const std::exception& e) {  // named, one line, exit 1
-        std::string why = e.what();
-        for (char& c : why) {
-          if (c == '\n' || c == '\r') c = ' ';
-        }
-        std::cerr << "ghclip: " << peer->name() << " failed: " << why << std::endl;
+      // In a child process: a peer that crashes (CGAL has) is reported, never takes ghclip down.
+      gh::tools::PeerOutcome outcome = gh::tools::clipInChild(*peer, subject, clip, *op);
+      if (outcome.kind == gh::tools::PeerOutcome::Kind::Refused) throw gh::InvalidInput(outcome.message);  // exit 2
+      if (outcome.kind == gh::tools::PeerOutcome::Kind::Failed) {
+        std::cerr << "ghclip: " << peer->name() << " failed: " << outcome.message << std::endl;  // one line, exit 1
         return gh::tools::kExitFailed;
       }
+      result = std::move(outcome.result);
       stats.phase1Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       stats.outputRings = result.size();
       stats.outputVertices = gh::vertexCount(result);
