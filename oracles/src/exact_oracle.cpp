@@ -198,18 +198,15 @@ KPoint pointInside(Face f) {
   return KPoint(x0, (ys[best] + ys[best + 1]) / 2);
 }
 
-// The double nearest to an exact number (ties either way): a faithful rounding, which the
+std::pair<double, double> roundingInterval(const FT& v, int k, int ulps);  // below
+
+// The double nearest to an exact number (ties to the lower): a faithful rounding, which the
 // interval approximation's midpoint (CGAL::to_double of a lazy number) need not be.
 double nearestDouble(const FT& v) {
-  const auto& approx = CGAL::approx(v);
-  if (approx.is_point()) return approx.inf();
-  const EFT exact = CGAL::exact(v);
-  double d = CGAL::to_double(exact);
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  for (double next : {std::nextafter(d, -inf), std::nextafter(d, inf)}) {
-    if (std::isfinite(next) && CGAL::abs(EFT(next) - exact) < CGAL::abs(EFT(d) - exact)) d = next;
-  }
-  return d;
+  const auto [lo, hi] = roundingInterval(v, 0, 1);
+  if (lo == hi) return lo;
+  const EFT& exact = CGAL::exact(v);
+  return exact - EFT(lo) <= EFT(hi) - exact ? lo : hi;
 }
 
 // The boundary of the union of faces where `in` holds, as rings with the region on the left:
