@@ -14,6 +14,7 @@
 #include "ghclip/errors.h"
 #include "ghio/formats.h"
 #include "ghpeers/peer.h"
+#include "tool_main.h"
 
 namespace gh::tools {
 
@@ -66,10 +67,7 @@ inline PeerOutcome clipInChild(const peers::Peer& peer, const Region& subject, c
   if (text.empty() || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     return {PeerOutcome::Kind::Failed, {}, "its process ended without an answer"};
   }
-  std::string rest = text.substr(1);
-  for (char& c : rest) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
+  const std::string rest = oneLine(text.substr(1));
   if (text[0] == 'R') return {PeerOutcome::Kind::Refused, {}, rest};
   if (text[0] == 'F') return {PeerOutcome::Kind::Failed, {}, rest};
   Region result = io::readWkt(std::string_view(text).substr(1));

@@ -7,16 +7,12 @@
 #include "ghoracle/exact_oracle.h"
 
 namespace gh::tools {
-namespace {
-
 std::string oneLine(std::string text) {
   for (char& c : text) {
     if (c == '\n' || c == '\r') c = ' ';
   }
   return text;
 }
-
-}  // namespace
 
 int usageError(const std::string& tool, const std::string& message) {
   std::cerr << tool << ": " << oneLine(message) << std::endl;

@@ -22,6 +22,9 @@ class BadInput : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A message on one line (line breaks become spaces), as every tool prints its errors.
+std::string oneLine(std::string text);
+
 // Prints "tool: message" (one line) on stderr and returns kExitBadInput.
 int usageError(const std::string& tool, const std::string& message);
 

@@ -56,6 +56,15 @@ bool lineDistanceAtMost(Point a, Point b, Point p, double bound) {
   return abs(exact) <= mpq_class(bound);
 }
 
+// Which of n equal buckets over [lo, hi] holds v, clamped to the ends: a monotone function of
+// v, so that everything stored under the buckets of [a, b] is found from any v in [a, b]. A
+// zero-width range (NaN) puts everything in bucket 0.
+std::size_t bucket(double v, double lo, double hi, std::size_t n) {
+  const double f = (v - lo) / (hi - lo) * static_cast<double>(n);
+  if (!(f > 0)) return 0;
+  return std::min(n - 1, static_cast<std::size_t>(f));
+}
+
 // A region's edges in horizontal bands, so that a ray test visits only the edges whose y-range
 // can hold the point's y (every other edge lies wholly above or below it and cannot count). The
 // band of a y is a monotone function of y, so an edge with ymin <= y <= ymax is always found.
@@ -115,11 +124,7 @@ class EvenOddRegion {
   struct Edge {
     Point a, b;
   };
-  std::size_t band(double y) const {
-    const double f = (y - minY_) / (maxY_ - minY_) * static_cast<double>(bands_);
-    if (!(f > 0)) return 0;  // also a zero height (NaN)
-    return std::min(bands_ - 1, static_cast<std::size_t>(f));
-  }
+  std::size_t band(double y) const { return bucket(y, minY_, maxY_, bands_); }
   std::vector<Edge> edges_;
   double minY_ = 0, maxY_ = 0;
   std::size_t bands_ = 1;
@@ -211,11 +216,7 @@ class OperandEdges {
   // A uniform grid over the edges' boxes, each widened by its coarse delta: an edge is listed
   // in every cell its widened box meets, and a point's cell (clamped to the grid, by the same
   // monotone function) lists every edge whose widened box holds it.
-  std::size_t axis(double v, double lo, double hi) const {
-    const double f = (v - lo) / (hi - lo) * static_cast<double>(side_);
-    if (!(f > 0)) return 0;
-    return std::min(side_ - 1, static_cast<std::size_t>(f));
-  }
+  std::size_t axis(double v, double lo, double hi) const { return bucket(v, lo, hi, side_); }
   std::size_t cell(double x, double y) const { return axis(y, y0_, y1_) * side_ + axis(x, x0_, x1_); }
   void index() {
     if (edges_.empty()) return;
