@@ -95,6 +95,44 @@ TEST(Orientation, AgreesWithRationalsOnNearCollinearFixtures) {
   EXPECT_GT(counters.expansionDecisions, 0u);  // the fixture does reach the exact stages
 }
 
+// The turn between two edge directions, four points a few of their own ulps off one line (the
+// differences round too). The eight fixed quadruples were found by a search of 3*10^6 such random
+// ones: their rounded determinants have the wrong sign and exceed u*(|left| + |right|) by up to
+// 1.87 times, so only the whole of Shewchuk's stage-A bound, (3 + 16u)u, sends them on.
+TEST(CrossSign, AgreesWithRationalsOnNearCollinearFixtures) {
+  const auto rational = [](Point a, Point b, Point c, Point d) {
+    return sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+  };
+  ExactCounters counters;
+  const Point found[][4] = {
+      {{0x1.9d6fe69abdc2cp+0, 0x1.852c90919d5dap+0}, {0x1.532e8e11caf68p+3, 0x1.02d6f204d9e75p+3}, {-0x1.4205810ccf967p+2, -0x1.ab679ca3beab3p+1}, {0x1.36b5df688adp+4, 0x1.d12f40be2b8fap+3}},
+      {{0x1.f049932ef3a2fp+1, 0x1.964a736b809f2p+1}, {-0x1.0f08ebc2b128p+1, -0x1.35659e3f1003dp+0}, {0x1.d52522595a5f4p-1, 0x1.0267fb9bcbc3bp+0}, {-0x1.1fed930f2748ep+3, -0x1.8f47e2ee4e2ap+2}},
+      {{0x1.ed61a217252e1p+2, 0x1.7e704d3d7bdcap+2}, {-0x1.025125486dbfp-1, -0x1.e11fbd7896374p-6}, {-0x1.69a67e3dd229ap+2, -0x1.e5599d659f2e2p+1}, {-0x1.99cf80b3ff40bp+4, -0x1.262e3c801f56cp+4}},
+      {{-0x1.b2e8b3101cfc6p+2, -0x1.283c01f66fe9p+2}, {0x1.c26186e72df08p-2, 0x1.527509982990cp-1}, {0x1.58b84426156a1p+2, 0x1.11c08f8c59089p+2}, {-0x1.18567c282163ap+0, -0x1.d82ddb0f7b5b5p-2}},
+      {{-0x1.ff10ffe48efc9p+1, -0x1.4a2f7fd6b4317p+1}, {0x1.7d62f405834fap+1, 0x1.42496bc119066p+1}, {-0x1.63bfbc6841092p+2, -0x1.dcb895f0c64aap+1}, {0x1.42cd44574a97dp+1, 0x1.17749ccc8d9ddp+1}},
+      {{0x1.582eedcce473ep+1, 0x1.27166820a994bp+1}, {0x1.ab8aeb99d34fap+4, 0x1.3e0221946bed9p+4}, {0x1.4c755f3726aa8p+0, 0x1.49f8799e2e238p+0}, {-0x1.2791ee6b10877p+4, -0x1.a551991e83073p+3}},
+      {{-0x1.c9a71de78ec0ap-2, 0x1.a1a0b9de0d204p-7}, {-0x1.b0b28234a0d02p+2, -0x1.269e10c7056d5p+2}, {0x1.d2fe294e0cab2p+2, 0x1.6b2560536c3ebp+2}, {0x1.a3c2d06c7437p+4, 0x1.3851b3cda4e2bp+4}},
+      {{0x1.afb4267ae3217p+2, 0x1.51589c5dc0a2fp+2}, {-0x1.7b9595e958ed8p+2, -0x1.ff92b5d187444p+1}, {0x1.82d3ff4651554p+0, 0x1.71b861c937a95p+0}, {-0x1.b467292e1f0ep+3, -0x1.3430c07928de8p+3}},
+  };
+  for (const auto& [a, b, c, d] : found) {
+    const double left = (b.x - a.x) * (d.y - c.y), right = (b.y - a.y) * (d.x - c.x);
+    ASSERT_NE((left - right > 0) - (left - right < 0), rational(a, b, c, d));  // the doubles are wrong
+    EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), rational(a, b, c, d)) << a.x;
+  }
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> k(-64, 64);
+  std::uniform_real_distribution<double> t(-1, 1);
+  const auto near = [&](double scale) {
+    const double x = 0.37 + scale * t(rng), y = 0.61 + 0.7311 * (x - 0.37);
+    return Point{x + k(rng) * (std::nextafter(x, 1e9) - x), y + k(rng) * (std::nextafter(y, 1e9) - y)};
+  };
+  for (int i = 0; i < 20000; ++i) {
+    const Point a = near(8), b = near(32), c = near(8), d = near(32);
+    EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), rational(a, b, c, d)) << i;
+  }
+  EXPECT_GT(counters.expansionDecisions, 0u);
+}
+
 // Found by the OGC conversion test at 2^-540: between 2^-900 and ~2^-537 the differences of
 // coordinates are "safe" for the filter but their products underflow to exactly 0, which the
 // running error bound took for an exact zero: orientation() said Zero for a plain right turn.
