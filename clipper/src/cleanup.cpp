@@ -82,16 +82,6 @@ class CleanUp {
   }
   void simplify(Ring& ring) const { ring.resize(static_cast<std::size_t>(simplify(ring.data(), ring.data() + ring.size()) - ring.data())); }
 
-  bool allCollinear(const Point* first, const Point* last) const {
-    // first[0] != first[1] after simplify, so they span a line.
-    for (const Point* i = first + 2; i < last; ++i) {
-      if (orientation(first[0], first[1], *i, counters_) != Sign::Zero) return false;
-    }
-    return true;
-  }
-
-  bool allCollinear(const Ring& ring) const { return allCollinear(ring.data(), ring.data() + ring.size()); }
-
   // Drops vertices where the ring goes straight on (collinear, not folding back).
   void dropStraightVertices(Ring& ring) const {
     for (bool changed = true; changed && ring.size() > 3;) {
@@ -367,7 +357,9 @@ Region cleanedUp(FlatRings& rings, bool dissolve, ExactCounters& counters) {
   for (std::size_t r = 0; r < rings.size(); ++r) {
     Point* first = points.data() + rings.start[r];
     Point* last = cleanUp.simplify(first, points.data() + rings.start[r + 1]);
-    if (last - first < 3 || cleanUp.allCollinear(first, last)) continue;
+    // A ring on one line always folds back at its extreme points, so spike removal has left it
+    // with fewer than 3 points: no separate collinearity test is needed.
+    if (last - first < 3) continue;
     std::copy(first, last, points.data() + write);
     write += static_cast<std::uint32_t>(last - first);
     start.push_back(write);
@@ -382,7 +374,7 @@ Region cleanedUp(FlatRings& rings, bool dissolve, ExactCounters& counters) {
   for (Ring& ring : cleanUp.dissolveSeams(rings.toRegion())) {
     cleanUp.simplify(ring);
     cleanUp.dropStraightVertices(ring);
-    if (ring.size() >= 3 && !cleanUp.allCollinear(ring)) dissolved.push_back(std::move(ring));
+    if (ring.size() >= 3) dissolved.push_back(std::move(ring));
   }
   return dissolved;
 }

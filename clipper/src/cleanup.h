@@ -11,10 +11,11 @@
 namespace gh::detail {
 
 // Drops repeated points and spike tips (a -> b -> a' folding back on one line), then rings left
-// with fewer than 3 points or with all points on one line; all decided exactly, fallbacks to
-// rational arithmetic counted in `counters`. With dissolveSeams (for an arithmetic whose answers
-// are a limit that leaves zero-width parts: Arithmetic::kLeavesZeroWidthParts), zero-width seams
-// between rings that share a vertex are dissolved too.
+// with fewer than 3 points (a ring on one line folds back at its ends, so it is one of them);
+// all decided exactly, fallbacks to rational arithmetic counted in `counters`. With dissolveSeams
+// (for an arithmetic whose answers are a limit that leaves zero-width parts:
+// Arithmetic::kLeavesZeroWidthParts), zero-width seams between rings that share a vertex are
+// dissolved too.
 // `rings` is trimmed in place on the way.
 Region cleanedUp(FlatRings& rings, bool dissolveSeams, ExactCounters& counters);
 Region cleanedUp(const Region& region, bool dissolveSeams, ExactCounters& counters);

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "ghclip/measure.h"
 #include "ghoracle/tolerance.h"
+#include "exact_orientation.h"
 #include "judging_scale.h"
 
 namespace gh::oracle {
@@ -28,6 +30,27 @@ double measurementError(const Region& a, const Region& b, const Region& c) {
     }
   }
   return 16 * 0x1p-53 * edges * (maxX - minX) * maxY + 16 * edges * edges * std::numeric_limits<double>::denorm_min();
+}
+
+// Whether every vertex of ring lies on one line, decided exactly.
+bool allOnOneLine(const Ring& ring) {
+  const auto distinct = std::find_if(ring.begin(), ring.end(), [&](const Point& p) { return p != ring.front(); });
+  if (distinct == ring.end()) return true;
+  return std::all_of(ring.begin(), ring.end(), [&](const Point& p) { return orientation(ring.front(), *distinct, p) == 0; });
+}
+
+// The first vertex b where the ring turns straight back (a -> b -> c on one line, c behind b), if
+// any; decided exactly, along an axis on which a and b differ. Zero-length edges are reported
+// on their own and skipped here.
+std::optional<std::size_t> spikeTip(const Ring& ring) {
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point a = ring[(i + n - 1) % n], b = ring[i], c = ring[(i + 1) % n];
+    if (a == b || b == c || orientation(a, b, c) != 0) continue;
+    const bool backwards = a.x != b.x ? (b.x > a.x) != (c.x > b.x) : (b.y > a.y) != (c.y > b.y);
+    if (backwards) return i;
+  }
+  return std::nullopt;
 }
 
 // The area inequalities of op, on a problem at a comfortable scale.
@@ -82,6 +105,15 @@ std::vector<std::string> invariantViolations(const Region& subject, const Region
       if (ring[i] == ring[(i + 1) % ring.size()]) {
         out.push_back("ring " + std::to_string(r + 1) + " has a zero-length edge");
       }
+    }
+    // A ring needs three vertices off one line to enclose anything; one that does not is debris
+    // the clean-up should have removed (and no GIS reader accepts it).
+    if (ring.size() < 3) {
+      out.push_back("ring " + std::to_string(r + 1) + " has fewer than 3 vertices");
+    } else if (allOnOneLine(ring)) {
+      out.push_back("ring " + std::to_string(r + 1) + " has all its vertices on one line");
+    } else if (const auto i = spikeTip(ring)) {
+      out.push_back("ring " + std::to_string(r + 1) + " folds back on itself at vertex " + std::to_string(*i + 1) + " (a zero-width spike)");
     }
   }
   // Areas are measured on a copy at a comfortable scale (judging_scale.h): at subnormal or

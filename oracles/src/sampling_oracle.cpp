@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "exact_orientation.h"
 #include "judging_scale.h"
 
 namespace gh::oracle {
@@ -27,19 +28,6 @@ struct Box {
     }
   }
 };
-
-// Sign of (b - a) x (p - a), exactly: Shewchuk's filter in doubles, GMP when it cannot decide
-// (or when a difference overflows or a product underflows).
-int orientation(Point a, Point b, Point p) {
-  const double l = (b.x - a.x) * (p.y - a.y), r = (b.y - a.y) * (p.x - a.x);
-  const double det = l - r, magnitude = std::abs(l) + std::abs(r);
-  if (std::isfinite(magnitude) && magnitude > 0x1p-900 && std::abs(det) > 0x1.0000000000002p-51 * magnitude) {
-    return det > 0 ? 1 : -1;
-  }
-  const mpq_class bx(b.x), by(b.y), ax(a.x), ay(a.y), px(p.x), py(p.y);
-  const mpq_class exact = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-  return sgn(exact);
-}
 
 // Whether |(b - a) x (p - a)| <= bound, i.e. p is within bound / |b - a| of the line ab: in
 // doubles when the rounding cannot matter, else in GMP (p near the origin and a, b at 1e144

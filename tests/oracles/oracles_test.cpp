@@ -141,6 +141,25 @@ TEST(Oracles, InvariantsCatchImpossibleAreas) {
       oracle::invariantViolations(a, b, Op::Intersection, {{{1, 1}, {1, 1}, {2, 2}, {1, 2}}}).empty());
 }
 
+// Rings that enclose nothing, and spikes, are debris the clean-up must remove: caught whatever their size,
+// with collinearity decided exactly (a point one ulp off the line makes a real triangle).
+TEST(Oracles, InvariantsCatchRingsThatEncloseNothing) {
+  const Region a{rect(0, 0, 2, 2)}, b{rect(1, 1, 3, 3)};
+  const auto with = [](Ring extra) { return Region{rect(1, 1, 2, 2), std::move(extra)}; };
+  const auto first = [&](const Region& r) {
+    const auto v = oracle::invariantViolations(a, b, Op::Intersection, r);
+    return v.empty() ? std::string() : v.front();
+  };
+  EXPECT_EQ(first({rect(1, 1, 2, 2)}), "");
+  EXPECT_EQ(first(with({{1, 1}, {2, 2}})), "ring 2 has fewer than 3 vertices");
+  EXPECT_EQ(first(with({{1, 1}, {1.5, 1.5}, {2, 2}})), "ring 2 has all its vertices on one line");
+  EXPECT_EQ(first(with({{1e300, 1e300}, {-1e300, -1e300}, {0.5, 0.5}, {1e-300, 1e-300}})), "ring 2 has all its vertices on one line");
+  EXPECT_EQ(first(with({{1, 1}, {1.5, std::nextafter(1.5, 2.0)}, {2, 2}})), "");
+  EXPECT_EQ(first({{{1, 1}, {2, 1}, {2, 2}, {1.5, 2}, {1.5, 3}, {1.5, 2}, {1, 2}}}), "ring 1 folds back on itself at vertex 5 (a zero-width spike)");
+  EXPECT_EQ(first({{{1, 1}, {2, 1}, {2, 2}, {1, 2}, {1, 0.5}}}), "ring 1 folds back on itself at vertex 5 (a zero-width spike)");
+  EXPECT_EQ(first({{{1, 1}, {1.5, 1}, {2, 1}, {2, 2}, {1, 2}}}), "");  // straight on is not a spike
+}
+
 // 400 seeded cases of the paper's workload (n = 5..50, all five operations): the two oracles
 // must reach the same verdict. Half the answers are damaged (largest ring dropped) so that both
 // verdicts are exercised.
