@@ -1,18 +1,25 @@
 // The exact variant on degenerate input, beside the naive variant: integer-grid n-gons and every
 // named degenerate family, all five operations, judged by the exact oracle; and bitset-grid cases
 // whose answers must equal the bitwise answer with error area exactly 0.
-// Writes results/exact-degenerate.md.
-//   exact_degenerate OUT_DIR [CASES]
+// Writes OUT_DIR/exact-degenerate.md; with --shard K/M, the raw tallies of a part of the seeds as
+// OUT_DIR/exact-degenerate-shard-K-of-M.json, which --merge turns into the same report.
+//   exact_degenerate OUT_DIR [CASES] [--shard K/M | --merge FILES...]
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "common/provenance.h"
+#include "common/shard.h"
 #include "ghclip/clip.h"
 #include "ghclip/errors.h"
 #include "ghio/formats.h"
+#include "ghio/output_files.h"
 #include "ghoracle/exact_oracle.h"
 #include "ghwork/generators.h"
 #include "tool_main.h"
@@ -22,35 +29,62 @@ using namespace gh;
 
 namespace {
 
+// Where a case comes in one run's order (seed, then operation): what decides which of two
+// equally bad cases a merge of shards reports, as one run would have.
+long orderOf(long seed, std::size_t opIndex) { return seed * 5 + static_cast<long>(opIndex); }
+
 struct Tally {
   long checks = 0, fails = 0, clipFailures = 0, zeroError = 0;
   double worstRelative = 0;
   std::string worstCase;  // the input and operation of the worst relative error
+  long worstOrder = 0;
   unsigned long long filterFailures = 0, predicateCalls = 0;
   std::string firstFailure;
+  long firstOrder = 0;
+
+  void merge(const Tally& o) {
+    checks += o.checks, fails += o.fails, clipFailures += o.clipFailures, zeroError += o.zeroError;
+    filterFailures += o.filterFailures, predicateCalls += o.predicateCalls;
+    if (!o.worstCase.empty() && (o.worstRelative > worstRelative || (o.worstRelative == worstRelative && (worstCase.empty() || o.worstOrder < worstOrder)))) {
+      worstRelative = o.worstRelative, worstCase = o.worstCase, worstOrder = o.worstOrder;
+    }
+    if (!o.firstFailure.empty() && (firstFailure.empty() || o.firstOrder < firstOrder)) {
+      firstFailure = o.firstFailure, firstOrder = o.firstOrder;
+    }
+  }
 };
+void to_json(nlohmann::json& j, const Tally& t) {
+  j = {{"checks", t.checks}, {"fails", t.fails}, {"clip_failures", t.clipFailures}, {"zero_error", t.zeroError},
+       {"worst_relative", t.worstRelative}, {"worst_case", t.worstCase}, {"worst_order", t.worstOrder},
+       {"filter_failures", t.filterFailures}, {"predicate_calls", t.predicateCalls},
+       {"first_failure", t.firstFailure}, {"first_order", t.firstOrder}};
+}
+void from_json(const nlohmann::json& j, Tally& t) {
+  j.at("checks").get_to(t.checks), j.at("fails").get_to(t.fails), j.at("clip_failures").get_to(t.clipFailures);
+  j.at("zero_error").get_to(t.zeroError), j.at("worst_relative").get_to(t.worstRelative);
+  j.at("worst_case").get_to(t.worstCase), j.at("worst_order").get_to(t.worstOrder);
+  j.at("filter_failures").get_to(t.filterFailures), j.at("predicate_calls").get_to(t.predicateCalls);
+  j.at("first_failure").get_to(t.firstFailure), j.at("first_order").get_to(t.firstOrder);
+}
 
 const char* kFamilies[] = {"grid", "identical", "shared-edge", "touching-vertex",
                            "nested-touching", "sliver", "sub-boundary", "bitset-grid"};
+const Variant kVariants[] = {Variant::Naive, Variant::Exact};
 
-}  // namespace
+using Tallies = std::map<std::string, std::map<Variant, Tally>>;  // [family][variant]
 
-int run(int argc, char** argv) {
-  if (argc < 2) return tools::usageError("exact_degenerate", "usage: exact_degenerate OUT_DIR [CASES]");
-  const fs::path out = argv[1];
-  const long cases = argc > 2 ? std::stol(argv[2]) : 10000;
-  fs::create_directories(out);
-  std::map<std::string, std::map<Variant, Tally>> tallies;
-  const long perFamily = cases / static_cast<long>(std::size(kFamilies));
+void study(Tallies& tallies, long perFamily, const experiments::Shard& shard) {
   for (const std::string family : kFamilies) {
     for (long i = 0; i < perFamily; ++i) {
+      const auto seed = static_cast<std::uint64_t>(i + 1);
+      if (!shard.takes(i + 1)) continue;
       const std::size_t n = family == "bitset-grid" ? 8 + static_cast<std::size_t>(i % 40)
                                                     : 3 + static_cast<std::size_t>(i % 10);
-      const auto seed = static_cast<std::uint64_t>(i + 1);
       const work::Workload w = work::generate(family, n, seed);
       const work::BitsetGrid bits = family == "bitset-grid" ? work::bitsetGrid(n, seed) : work::BitsetGrid{};
-      for (Op op : kAllOps) {
-        for (Variant v : {Variant::Naive, Variant::Exact}) {
+      for (std::size_t opIndex = 0; opIndex < std::size(kAllOps); ++opIndex) {
+        const Op op = kAllOps[opIndex];
+        for (Variant v : kVariants) {
           Tally& t = tallies[family][v];
           ++t.checks;
           Stats stats;
@@ -86,14 +120,89 @@ int run(int argc, char** argv) {
               t.worstRelative = relative;
               t.worstCase = std::string(name(op)) + " of `" + io::writeWkt(w.subject) + "` and `" +
                             io::writeWkt(w.clip) + "` (seed " + std::to_string(seed) + ", n " + std::to_string(n) + ")";
+              t.worstOrder = orderOf(i + 1, opIndex);
             }
             if (t.firstFailure.empty()) {
               t.firstFailure = std::string(name(op)) + " of `" + io::writeWkt(w.subject) + "` and `" + io::writeWkt(w.clip) + "`";
+              t.firstOrder = orderOf(i + 1, opIndex);
             }
           }
         }
       }
     }
+  }
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  CLI::App app{"The exact variant on degenerate input beside the naive variant, judged by the exact oracle."};
+  std::string outDir, shardText;
+  long cases = 10000;
+  std::vector<std::string> mergeFiles;
+  app.add_option("OUT_DIR", outDir, "directory for exact-degenerate.md (or a shard's JSON)")->required();
+  app.add_option("CASES", cases, "cases in all, shared by the families (default 10000)")->check(CLI::PositiveNumber);
+  app.add_option("--shard", shardText, "K/M: only seeds s with (s - 1) mod M = K - 1; write OUT_DIR/exact-degenerate-shard-K-of-M.json");
+  app.add_option("--merge", mergeFiles, "shard JSON files: write the report of all of them together")->excludes("--shard");
+  if (const auto exitCode = tools::parseCommandLine(app, "exact_degenerate", argc, argv)) return *exitCode;
+  experiments::Shard shard;
+  if (!shardText.empty()) {
+    const auto parsed = experiments::parseShard(shardText);
+    if (!parsed) return tools::usageError("exact_degenerate", "--shard wants K/M with 1 <= K <= M, got '" + shardText + "'");
+    shard = *parsed;
+  }
+  const fs::path out = outDir;
+  fs::create_directories(out);
+  Tallies tallies;
+  long perFamily = cases / static_cast<long>(std::size(kFamilies));
+  if (!mergeFiles.empty()) {
+    std::set<int> seen;
+    int of = 0;
+    long perFamilyOfAll = -1;
+    for (const std::string& file : mergeFiles) {
+      try {
+        const nlohmann::json j = nlohmann::json::parse(io::readText(file));
+        const int k = j.at("shard").get<int>(), m = j.at("shards").get<int>();
+        const long each = j.at("cases_per_family").get<long>();
+        if (perFamilyOfAll >= 0 && (each != perFamilyOfAll || m != of)) {
+          throw tools::BadInput(file + ": a shard of another study");
+        }
+        if (!seen.insert(k).second) throw tools::BadInput(file + ": shard " + std::to_string(k) + " given twice");
+        perFamilyOfAll = each, of = m;
+        for (const nlohmann::json& t : j.at("tallies")) {
+          const std::string family = t.at("family").get<std::string>();
+          const std::string variant = t.at("variant").get<std::string>();
+          const auto v = parseVariant(variant);
+          if (!v || std::none_of(std::begin(kFamilies), std::end(kFamilies), [&](const char* f) { return family == f; })) {
+            throw tools::BadInput(file + ": unknown family or variant");
+          }
+          tallies[family][*v].merge(t.at("tally").get<Tally>());
+        }
+      } catch (const nlohmann::json::exception& e) {
+        throw tools::BadInput(file + ": not an exact-degenerate shard (" + e.what() + ")");
+      }
+    }
+    if (static_cast<int>(seen.size()) != of) {
+      throw tools::BadInput("--merge: " + std::to_string(seen.size()) + " of " + std::to_string(of) + " shards given");
+    }
+    perFamily = perFamilyOfAll;
+  } else {
+    study(tallies, perFamily, shard);
+  }
+  long exactFails = 0, total = 0;
+  for (const std::string family : kFamilies) {
+    exactFails += tallies[family][Variant::Exact].fails;
+    total += tallies[family][Variant::Exact].checks;
+  }
+  if (!shardText.empty()) {
+    nlohmann::json j{{"shard", shard.k}, {"shards", shard.m}, {"cases_per_family", perFamily}, {"tallies", nlohmann::json::array()}};
+    for (const auto& [family, byVariant] : tallies) {
+      for (const auto& [v, t] : byVariant) j["tallies"].push_back({{"family", family}, {"variant", std::string(name(v))}, {"tally", t}});
+    }
+    const fs::path file = out / ("exact-degenerate-" + shard.fileSuffix());
+    io::writeText(file.string(), j.dump(1));
+    std::cout << "wrote " << file.string() << "; exact: " << exactFails << " failures in " << total << " checks\n";
+    return exactFails == 0 ? 0 : tools::kExitFailed;
   }
   std::ostringstream md;
   md << "# The exact variant on degenerate input\n\n" << experiments::markdown(experiments::provenance(argc, argv))
@@ -104,12 +213,9 @@ int run(int argc, char** argv) {
      << "| family | checks | exact: fail | exact: error 0 | exact: filter failures per candidate pair | "
         "naive: fail | naive: ClipFailure | naive: error 0 | naive: worst relative error |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
-  long exactFails = 0, total = 0;
   for (const std::string family : kFamilies) {
     const Tally& e = tallies[family][Variant::Exact];
     const Tally& nv = tallies[family][Variant::Naive];
-    exactFails += e.fails;
-    total += e.checks;
     md << "| " << family << " | " << e.checks << " | " << e.fails << " | " << e.zeroError << " | "
        << (e.predicateCalls ? static_cast<double>(e.filterFailures) / static_cast<double>(e.predicateCalls) : 0.0)
        << " | " << nv.fails << " | " << nv.clipFailures << " | " << nv.zeroError << " | " << nv.worstRelative << " |\n";

@@ -20,6 +20,7 @@
 #include "common/isolated_run.h"
 #include "common/judge.h"
 #include "common/provenance.h"
+#include "common/shard.h"
 #include "ghclip/errors.h"
 #include "ghclip/measure.h"
 #include "ghio/formats.h"
@@ -311,18 +312,29 @@ int run(int argc, char** argv) {
                  "instead of the report (run every K = 1..M, on any machines, then --merge)");
   app.add_option("--merge", mergeFiles, "shard JSON files: write the report of all of them together")
       ->excludes("--shard");
+  std::vector<std::string> methodNames;
+  app.add_option("--methods", methodNames, "only these methods, comma-separated (default: every variant and peer)")
+      ->delimiter(',');
   if (const auto exitCode = tools::parseCommandLine(app, "robustness", argc, argv)) return *exitCode;
   if (cases == 0) cases = full ? 200 : 25;
   int shard = 1, shards = 1;
   if (!shardText.empty()) {
-    char slash = 0;
-    std::istringstream in(shardText);
-    if (!(in >> shard >> slash >> shards) || slash != '/' || !in.eof() || shards < 1 || shard < 1 || shard > shards) {
-      return tools::usageError("robustness", "--shard wants K/M with 1 <= K <= M, got '" + shardText + "'");
-    }
+    const auto parsed = experiments::parseShard(shardText);
+    if (!parsed) return tools::usageError("robustness", "--shard wants K/M with 1 <= K <= M, got '" + shardText + "'");
+    shard = parsed->k, shards = parsed->m;
   }
   const fs::path out = outDir;
-  const std::vector<Method> methods = allMethods();
+  std::vector<Method> methods = allMethods();
+  if (!methodNames.empty()) {
+    for (const std::string& wanted : methodNames) {
+      if (std::none_of(methods.begin(), methods.end(), [&](const Method& m) { return m.name == wanted; })) {
+        return tools::usageError("robustness", "--methods: unknown method '" + wanted + "'");
+      }
+    }
+    methods.erase(std::remove_if(methods.begin(), methods.end(), [&](const Method& m) {
+                    return std::find(methodNames.begin(), methodNames.end(), m.name) == methodNames.end();
+                  }), methods.end());
+  }
   IsolationLimits limits;
   limits.seconds = timeout;
   IsolatedRunner runner(methods, limits);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 
 #include "findings.h"
 #include "fuzz_input.h"
@@ -18,6 +19,9 @@ namespace gh::fuzz {
 inline int clipTarget(const char* target, Variant variant, const std::uint8_t* data, std::size_t size) {
   const Pair p = pair(data, size, 3, 16);
   const bool strict = variant == Variant::Exact;
+  oracle::SampleOptions so;
+  so.uniformPoints = 200;
+  std::optional<oracle::SamplingJudge> judge;  // what the five answers share, done once (for valid input)
   for (Op op : kAllOps) {
     Options o = optionsOf(variant);
     Region r;
@@ -40,9 +44,8 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
       if (strict) trap("invariant: " + violations.front(), p.subject, p.clip, op);
       record(target, "invariant: " + violations.front(), p.subject, p.clip, op, data, size);
     }
-    oracle::SampleOptions so;
-    so.uniformPoints = 200;
-    const auto v = oracle::sampleCheck(p.subject, p.clip, op, r, so);
+    if (!judge) judge.emplace(p.subject, p.clip, so);
+    const auto v = judge->check(op, r);
     if (!v.pass()) {
       if (strict) trap("sampling oracle disagrees", p.subject, p.clip, op);
       record(target, "sampling oracle disagrees", p.subject, p.clip, op, data, size);

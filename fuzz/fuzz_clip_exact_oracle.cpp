@@ -1,6 +1,6 @@
 // libFuzzer target: small fuzzed inputs, the exact variant judged by the exact CGAL oracle.
 // Any answer with a wrong face beyond the rounding zones traps; a case the oracle cannot judge is
-// recorded (counted apart), never a pass.
+// recorded (counted apart), never a pass. The five answers are judged in one arrangement.
 #include "findings.h"
 #include "fuzz_input.h"
 #include "ghclip/clip.h"
@@ -9,28 +9,31 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const gh::fuzz::Pair p = gh::fuzz::pair(data, size, 2, 8);
+  std::vector<gh::oracle::Answer> answers;
   for (gh::Op op : gh::kAllOps) {
     gh::Options o = gh::optionsOf(gh::Variant::Exact);
-    gh::Region r;
     try {
-      r = gh::clip(p.subject, p.clip, op, o);
+      answers.push_back({op, gh::clip(p.subject, p.clip, op, o)});
     } catch (const gh::InvalidInput&) {
       return 0;
     } catch (const gh::ClipFailure& e) {
       gh::fuzz::trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
     }
-    gh::oracle::ExactVerdict v;
-    try {
-      v = gh::oracle::exactCheck(p.subject, p.clip, op, r, {false, false, false});
-    } catch (const gh::oracle::CannotJudge& e) {
-      gh::fuzz::record("fuzz_clip_exact_oracle", std::string("cannot judge: ") + e.what(), p.subject,
-                       p.clip, op, data, size);
-      continue;
-    }
+  }
+  std::vector<gh::oracle::ExactVerdict> verdicts;
+  try {
+    verdicts = gh::oracle::exactCheckAll(p.subject, p.clip, answers, {false, false, false});
+  } catch (const gh::oracle::CannotJudge& e) {
+    gh::fuzz::record("fuzz_clip_exact_oracle", std::string("cannot judge: ") + e.what(), p.subject, p.clip,
+                     answers.front().op, data, size);
+    return 0;
+  }
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    const gh::oracle::ExactVerdict& v = verdicts[i];
     if (!v.pass) {
       gh::fuzz::trap("exact oracle: wrong faces beyond rounding, area " + std::to_string(v.beyondRoundingArea) +
                          " (error area " + std::to_string(v.errorArea) + ")",
-                     p.subject, p.clip, op);
+                     p.subject, p.clip, answers[i].op);
     }
   }
   return 0;

@@ -35,27 +35,33 @@ using KPoint = Kernel::Point_2;
 using EFT = Kernel::Exact_kernel::FT;  // exact rationals
 using SegmentTraits = RobustSegmentTraits<Kernel>;
 
-// How many segments of S, C and R run along a piece of curve, and the signed number of rounding
-// zone edges (+1 when the zone lies to the left of the piece directed left to right, -1 when to
-// its right).
+// How many segments of S and C run along a piece of curve, the parities of the answers' segments
+// along it (bit j: answer j, for the several answers judged in one arrangement), and the signed
+// number of rounding zone edges (+1 when the zone lies to the left of the piece directed left to
+// right, -1 when to its right).
 struct Counts {
-  int s = 0, c = 0, r = 0, z = 0;
+  int s = 0, c = 0;
+  unsigned r = 0;
+  int z = 0;
   bool operator==(const Counts& o) const { return s == o.s && c == o.c && r == o.r && z == o.z; }
-  int parityBits() const { return (s & 1) | (c & 1) << 1 | (r & 1) << 2; }
+  unsigned parityBits() const { return (s & 1u) | (c & 1u) << 1 | r << 2; }
   bool onOperands() const { return s + c > 0; }
 };
-// Overlapping segments add up their counts.
+// Overlapping segments add up their counts (and their parities).
 struct AddCounts {
   Counts operator()(const Counts& a, const Counts& b) const {
-    return {a.s + b.s, a.c + b.c, a.r + b.r, a.z + b.z};
+    return {a.s + b.s, a.c + b.c, a.r ^ b.r, a.z + b.z};
   }
 };
 
 using Traits = CGAL::Arr_curve_data_traits_2<SegmentTraits, Counts, AddCounts>;
-constexpr int kS = 1, kC = 2, kR = 4;
-// Parity bits of S (kS), C (kC) and R (kR), and how many rounding zones hold the face.
+constexpr unsigned kS = 1, kC = 2;
+constexpr std::size_t kMostAnswers = 30;  // parity bits of S, C and the answers in one unsigned
+// Parity bits of S (kS), C (kC) and answer j (answerBit(j)), and how many rounding zones hold
+// the face.
+constexpr unsigned answerBit(std::size_t j) { return 4u << j; }
 struct FaceData {
-  int bits = 0;
+  unsigned bits = 0;
   int zones = 0;
   bool visited = false;
 };
@@ -91,7 +97,7 @@ void propagate(Arrangement& arr) {
         if (!g->data().visited) {
           const Counts& counts = h->curve().data();
           const bool leftToRight = h->direction() == CGAL::ARR_LEFT_TO_RIGHT;
-          g->set_data({(f->data().bits ^ counts.parityBits()) & 7,
+          g->set_data({f->data().bits ^ counts.parityBits(),
                        f->data().zones + (leftToRight ? -counts.z : counts.z), true});
           queue.push_back(g);
         }
@@ -102,9 +108,9 @@ void propagate(Arrangement& arr) {
   }
 }
 
-bool expectedInside(Op op, int bits) { return apply(op, bits & kS, bits & kC); }
-bool resultInside(int bits) { return bits & kR; }
-bool isWrong(Op op, Face f) { return expectedInside(op, f->data().bits) != resultInside(f->data().bits); }
+bool expectedInside(Op op, unsigned bits) { return apply(op, bits & kS, bits & kC); }
+bool resultInside(unsigned bits, std::size_t j) { return bits & answerBit(j); }
+bool isWrong(Op op, std::size_t j, Face f) { return expectedInside(op, f->data().bits) != resultInside(f->data().bits, j); }
 
 template <class F>
 void forEachCcb(Face f, F&& visit) {
@@ -243,11 +249,13 @@ void build(const std::vector<Traits::Curve_2>& curves, Arrangement& arr) {
   propagate(arr);
 }
 
-std::vector<Traits::Curve_2> operandCurves(const Region& s, const Region& c, const Region& r) {
+std::vector<Traits::Curve_2> operandCurves(const Region& s, const Region& c, const std::vector<const Region*>& answers) {
   std::vector<Traits::Curve_2> curves;
   addSegments(normalized(s, OnBadRing::Drop), {1, 0, 0, 0}, curves);
   addSegments(normalized(c, OnBadRing::Drop), {0, 1, 0, 0}, curves);
-  addSegments(normalized(r, OnBadRing::Drop), {0, 0, 1, 0}, curves);
+  for (std::size_t j = 0; j < answers.size(); ++j) {
+    addSegments(normalized(*answers[j], OnBadRing::Drop), {0, 0, 1u << j, 0}, curves);
+  }
   return curves;
 }
 
@@ -392,10 +400,8 @@ using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
 // The rounding zones that meet some wrong face: for each straight line of S and C with a vertex
 // that is not a double, the convex hull of its vertices' rounding boxes, as edges for the
 // arrangement. Returns how many zones.
-std::size_t addRoundingZones(const Arrangement& arr, const std::vector<Face>& wrongFaces,
-                             const std::unordered_set<Point, PointHash>& inputVertices, int k, int ulps,
+std::size_t addRoundingZones(const OperandLines& lines, const std::vector<Face>& wrongFaces, int k, int ulps,
                              std::vector<Traits::Curve_2>& curves) {
-  const OperandLines lines(arr, inputVertices);
   std::vector<Box> wrongBoxes, pieceBoxes;
   for (std::size_t i = 0; i < wrongFaces.size(); ++i) wrongBoxes.emplace_back(faceBox(wrongFaces[i]), i);
   for (std::size_t i = 0; i < lines.runs().size(); ++i) {
@@ -471,21 +477,19 @@ double boxAreaOf(const Region& subject, const Region& clip) {
   return (maxX / 2 - minX / 2) * (maxY / 2 - minY / 2) * 4;  // halves: no overflow near 1e308
 }
 
-// The judgement proper, on a problem already at a comfortable scale: coordinates were multiplied
-// by 2^k (areas by 4^k).
-ExactVerdict judge(const Region& subject, const Region& clip, Op op, const Region& result,
-                   const ExactOptions& options, int k) {
+// The judgement proper of answer j of an arrangement of S, C and the answers, on a problem
+// already at a comfortable scale: coordinates were multiplied by 2^k (areas by 4^k). lines: the
+// straight lines of S and C, found when first needed.
+ExactVerdict judgeAnswer(const Arrangement& arr, const Region& subject, const Region& clip, Op op, std::size_t j,
+                         const ExactOptions& options, int k, std::optional<OperandLines>& lines) {
   const auto start = std::chrono::steady_clock::now();
-  Arrangement arr;
-  build(operandCurves(subject, clip, result), arr);
-
   ExactVerdict v;
   Interval expected = 0, got = 0, areaS = 0, areaC = 0;
   std::vector<Face> wrongFaces;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
     if (f->is_unbounded()) continue;  // outside everything: op(0, 0) = 0 for every op
-    const int bits = f->data().bits;
-    const bool want = expectedInside(op, bits), have = resultInside(bits);
+    const unsigned bits = f->data().bits;
+    const bool want = expectedInside(op, bits), have = resultInside(bits, j);
     if (!want && !have && !(bits & (kS | kC))) continue;
     const Interval area = faceAreaInterval(f);
     if (bits & kS) areaS += area;
@@ -508,25 +512,28 @@ ExactVerdict judge(const Region& subject, const Region& clip, Op op, const Regio
   Arrangement zoned;
   std::vector<Face> rounding, beyond;
   if (!wrongFaces.empty()) {
-    std::unordered_set<Point, PointHash> inputVertices;
-    for (const Region* r : {&subject, &clip}) {
-      for (const Ring& ring : *r) inputVertices.insert(ring.begin(), ring.end());
+    if (!lines) {
+      std::unordered_set<Point, PointHash> inputVertices;
+      for (const Region* r : {&subject, &clip}) {
+        for (const Ring& ring : *r) inputVertices.insert(ring.begin(), ring.end());
+      }
+      lines.emplace(arr, inputVertices);
     }
-    // The second arrangement holds only the wrong region's boundary (its R parity bit then
+    // The second arrangement holds only the wrong region's boundary (its answer-0 parity bit then
     // marks the wrong region) and the zones: far smaller than S, C and R again.
     std::vector<Traits::Curve_2> curves;
     for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
-      if (isWrong(op, e->face()) == isWrong(op, e->twin()->face())) continue;
+      if (isWrong(op, j, e->face()) == isWrong(op, j, e->twin()->face())) continue;
       const SegmentTraits::X_monotone_curve_2& piece = e->curve();
       curves.emplace_back(piece, Counts{0, 0, 1, 0});
     }
-    v.zones = addRoundingZones(arr, wrongFaces, inputVertices, k, options.constructionUlps, curves);
+    v.zones = addRoundingZones(*lines, wrongFaces, k, options.constructionUlps, curves);
     if (v.zones == 0) {
       beyond = wrongFaces;
     } else {
       build(curves, zoned);
       for (auto f = zoned.faces_begin(); f != zoned.faces_end(); ++f) {
-        if (f->is_unbounded() || !resultInside(f->data().bits)) continue;
+        if (f->is_unbounded() || !resultInside(f->data().bits, 0)) continue;
         (f->data().zones > 0 ? rounding : beyond).push_back(f);
       }
     }
@@ -567,13 +574,33 @@ ExactVerdict judge(const Region& subject, const Region& clip, Op op, const Regio
     v.expected = boundaryRings(arr, [op](Face f) { return expectedInside(op, f->data().bits); });
   }
   if (options.wantWrongRings && !wrongFaces.empty()) {
-    v.wrong = boundaryRings(arr, [op](Face f) { return isWrong(op, f); });
+    v.wrong = boundaryRings(arr, [op, j](Face f) { return isWrong(op, j, f); });
   }
   const double scale = problemScale(v);
   v.relative = relativeTo(scale, v.errorArea);
   v.relativeBeyond = relativeTo(scale, v.beyondRoundingArea);
   v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return v;
+}
+
+// Every answer judged against S and C in one arrangement, on a problem already at a comfortable
+// scale. Each verdict's seconds: its own judging and an equal share of building the arrangement.
+std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const std::vector<Answer>& answers,
+                                const ExactOptions& options, int k) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<const Region*> regions;
+  for (const Answer& a : answers) regions.push_back(&a.result);
+  Arrangement arr;
+  build(operandCurves(subject, clip, regions), arr);
+  const double shared = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                        static_cast<double>(std::max<std::size_t>(answers.size(), 1));
+  std::optional<OperandLines> lines;
+  std::vector<ExactVerdict> verdicts;
+  for (std::size_t j = 0; j < answers.size(); ++j) {
+    verdicts.push_back(judgeAnswer(arr, subject, clip, answers[j].op, j, options, k, lines));
+    verdicts.back().seconds += shared;
+  }
+  return verdicts;
 }
 
 // Everything the arrangement code may throw becomes CannotJudge (with CGAL's checks compiled in,
@@ -599,23 +626,69 @@ double ExactVerdict::relativeError() const { return relative; }
 
 double ExactVerdict::relativeBeyondRounding() const { return relativeBeyond; }
 
-ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const Region& result,
-                        const ExactOptions& options) {
+std::vector<ExactVerdict> exactCheckAll(const Region& subject, const Region& clip, const std::vector<Answer>& answers,
+                                        const ExactOptions& options) {
   if (options.constructionUlps < 1) throw std::invalid_argument("constructionUlps must be at least 1");
+  if (answers.size() > kMostAnswers) {
+    throw std::invalid_argument("exactCheckAll judges at most " + std::to_string(kMostAnswers) + " answers at once");
+  }
   return judging([&] {
-    const int k = judgingExponent(subject, clip, result);
-    if (k == 0) return judge(subject, clip, op, result, options, 0);
-    ExactVerdict v = judge(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), options, k);
+    std::vector<const Region*> all{&subject, &clip};
+    for (const Answer& a : answers) all.push_back(&a.result);
+    const int k = judgingExponent(all);
+    if (k == 0) return judge(subject, clip, answers, options, 0);
+    std::vector<Answer> scaled;
+    for (const Answer& a : answers) scaled.push_back({a.op, scaledBy(a.result, k)});
+    std::vector<ExactVerdict> verdicts = judge(scaledBy(subject, k), scaledBy(clip, k), scaled, options, k);
     // Back to the original scale (areas may underflow to 0 or overflow there; the relative error
     // and the verdict were decided at the comfortable scale).
-    for (double* area : {&v.expectedArea, &v.resultArea, &v.subjectArea, &v.clipArea, &v.boxArea,
-                         &v.areaUncertainty, &v.errorArea, &v.beyondRoundingArea}) {
-      *area = std::ldexp(*area, -2 * k);
+    for (ExactVerdict& v : verdicts) {
+      for (double* area : {&v.expectedArea, &v.resultArea, &v.subjectArea, &v.clipArea, &v.boxArea,
+                           &v.areaUncertainty, &v.errorArea, &v.beyondRoundingArea}) {
+        *area = std::ldexp(*area, -2 * k);
+      }
+      if (v.witness) v.witness = scaledBy(*v.witness, -k);
+      v.expected = scaledBy(v.expected, -k);
+      v.wrong = scaledBy(v.wrong, -k);
     }
-    if (v.witness) v.witness = scaledBy(*v.witness, -k);
-    v.expected = scaledBy(v.expected, -k);
-    v.wrong = scaledBy(v.wrong, -k);
-    return v;
+    return verdicts;
+  });
+}
+
+ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const Region& result,
+                        const ExactOptions& options) {
+  return exactCheckAll(subject, clip, {{op, result}}, options).front();
+}
+
+std::vector<double> symmetricDifferenceAreas(const std::vector<std::pair<Region, Region>>& pairs) {
+  if (2 * pairs.size() > kMostAnswers) {
+    throw std::invalid_argument("symmetricDifferenceAreas compares at most " + std::to_string(kMostAnswers / 2) + " pairs at once");
+  }
+  return judging([&] {
+    std::vector<const Region*> all;
+    for (const auto& [a, b] : pairs) all.push_back(&a), all.push_back(&b);
+    const int k = judgingExponent(all);
+    std::vector<Region> scaled;
+    if (k != 0) {
+      for (const Region* r : all) scaled.push_back(scaledBy(*r, k));
+      for (std::size_t i = 0; i < all.size(); ++i) all[i] = &scaled[i];
+    }
+    Arrangement arr;
+    build(operandCurves({}, {}, all), arr);
+    std::vector<Interval> areas(pairs.size(), Interval(0));
+    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+      if (f->is_unbounded()) continue;
+      const unsigned bits = f->data().bits;
+      std::optional<Interval> area;
+      for (std::size_t i = 0; i < pairs.size(); ++i) {
+        if (resultInside(bits, 2 * i) == resultInside(bits, 2 * i + 1)) continue;
+        if (!area) area = faceAreaInterval(f);
+        areas[i] += *area;
+      }
+    }
+    std::vector<double> out;
+    for (const Interval& a : areas) out.push_back(std::ldexp(CGAL::to_double(a), -2 * k));
+    return out;
   });
 }
 

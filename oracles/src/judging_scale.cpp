@@ -19,24 +19,19 @@ int lowestBitExponent(double v) {
 
 }  // namespace
 
-double largestMagnitude(const Region& a, const Region& b, const Region& c) {
+int judgingExponent(const std::vector<const Region*>& regions) {
   double m = 0;
-  for (const Region* r : {&a, &b, &c}) {
+  for (const Region* r : regions) {
     for (const Ring& ring : *r) {
       for (const Point& p : ring) m = std::max({m, std::abs(p.x), std::abs(p.y)});
     }
   }
-  return m;
-}
-
-int judgingExponent(const Region& a, const Region& b, const Region& c) {
-  const double m = largestMagnitude(a, b, c);
   if (m == 0 || !std::isfinite(m) || (m >= 0x1p-256 && m <= 0x1p256)) return 0;
   const int target = -std::ilogb(m);
   if (target > 0) return target;  // scaling up is exact: M * 2^k < 2 keeps everything finite
   // Scaling down loses the low bits of small coordinates: stop where the lowest one would.
   int lowest = -2200;  // the smallest k that keeps every coordinate exact
-  for (const Region* r : {&a, &b, &c}) {
+  for (const Region* r : regions) {
     for (const Ring& ring : *r) {
       for (const Point& p : ring) {
         for (double v : {p.x, p.y}) {
@@ -47,6 +42,8 @@ int judgingExponent(const Region& a, const Region& b, const Region& c) {
   }
   return std::max(target, lowest);
 }
+
+int judgingExponent(const Region& a, const Region& b, const Region& c) { return judgingExponent({&a, &b, &c}); }
 
 Point scaledBy(Point p, int k) { return {std::ldexp(p.x, k), std::ldexp(p.y, k)}; }
 

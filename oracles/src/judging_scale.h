@@ -9,16 +9,16 @@
 // next to 1e-300) is scaled only as far as every coordinate stays exact.
 #pragma once
 
+#include <vector>
+
 #include "ghclip/region.h"
 
 namespace gh::oracle {
 
-// M: the largest |coordinate| of the three regions (0 when they are empty).
-double largestMagnitude(const Region& a, const Region& b, const Region& c);
-
-// k such that every coordinate times 2^k is exact, 2^k * M as close to [1, 2) as that allows;
-// 0 when M is already moderate.
+// k such that every coordinate times 2^k is exact, 2^k * M as close to [1, 2) as that allows,
+// where M is the largest |coordinate| of the regions; 0 when M is already moderate (or 0).
 int judgingExponent(const Region& a, const Region& b, const Region& c);
+int judgingExponent(const std::vector<const Region*>& regions);
 
 // Every coordinate times 2^k.
 Region scaledBy(const Region& region, int k);

@@ -5,13 +5,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <functional>
 #include <random>
+#include <unordered_map>
 #include <vector>
 
 #include "exact_orientation.h"
 #include "judging_scale.h"
+#include "point_hash.h"
 
 namespace gh::oracle {
 namespace {
@@ -133,7 +136,8 @@ class OperandEdges {
     for (const Region* r : {&s, &c}) {
       for (const Ring& ring : *r) {
         for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-          if (ring[i] != ring[(i + 1) % n]) edges_.push_back({ring[i], ring[(i + 1) % n], -1});
+          const Point a = ring[i], b = ring[(i + 1) % n];
+          if (a != b) edges_.push_back({a, b, deltaAt(magnitude(a, b)), -1, 0, 0});
         }
       }
     }
@@ -146,17 +150,19 @@ class OperandEdges {
     const std::size_t k = cell(p.x, p.y);
     for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
       Edge& e = edges_[members_[m]];
-      const double coarse = deltaAt(magnitude(e.a, e.b));  // a bound on e's delta
-      if (p.x < std::min(e.a.x, e.b.x) - coarse || p.x > std::max(e.a.x, e.b.x) + coarse ||
-          p.y < std::min(e.a.y, e.b.y) - coarse || p.y > std::max(e.a.y, e.b.y) + coarse) {
+      if (p.x < std::min(e.a.x, e.b.x) - e.coarse || p.x > std::max(e.a.x, e.b.x) + e.coarse ||
+          p.y < std::min(e.a.y, e.b.y) - e.coarse || p.y > std::max(e.a.y, e.b.y) + e.coarse) {
         continue;
       }
-      if (e.largest < 0) e.largest = largestCrossing(e);
-      const double delta = deltaAt(e.largest);
+      if (e.largest < 0) {
+        e.largest = largestCrossing(e);
+        e.delta = deltaAt(e.largest);
+        e.length = std::hypot(e.b.x - e.a.x, e.b.y - e.a.y);
+      }
+      const double delta = e.delta;
       largest_ = std::max(largest_, delta);
-      const double dx = e.b.x - e.a.x, dy = e.b.y - e.a.y, length = std::hypot(dx, dy);
       const double t = along(e, p);
-      const bool within = t > 0 && t < 1 ? lineDistanceAtMost(e.a, e.b, p, delta * length)
+      const bool within = t > 0 && t < 1 ? lineDistanceAtMost(e.a, e.b, p, delta * e.length)
                                          : std::min(std::hypot(p.x - e.a.x, p.y - e.a.y),
                                                     std::hypot(p.x - e.b.x, p.y - e.b.y)) <= delta;
       if (within) return true;
@@ -169,7 +175,10 @@ class OperandEdges {
  private:
   struct Edge {
     Point a, b;
-    double largest;  // a bound on max(|x|, |y|) of its crossings; -1 until first needed
+    double coarse;   // the delta of its own magnitude: a bound on its delta
+    double largest;  // a bound on max(|x|, |y|) of its crossings; -1 until first needed, then
+    double delta;    // the delta of that and
+    double length;   // its length
   };
 
   static double magnitude(Point a) { return std::max(std::abs(a.x), std::abs(a.y)); }
@@ -214,9 +223,8 @@ class OperandEdges {
     std::vector<Box> boxes;
     x0_ = y0_ = std::numeric_limits<double>::infinity(), x1_ = y1_ = -x0_;
     for (const Edge& e : edges_) {
-      const double coarse = deltaAt(magnitude(e.a, e.b));
-      boxes.push_back({std::min(e.a.x, e.b.x) - coarse, std::max(e.a.x, e.b.x) + coarse,
-                       std::min(e.a.y, e.b.y) - coarse, std::max(e.a.y, e.b.y) + coarse});
+      boxes.push_back({std::min(e.a.x, e.b.x) - e.coarse, std::max(e.a.x, e.b.x) + e.coarse,
+                       std::min(e.a.y, e.b.y) - e.coarse, std::max(e.a.y, e.b.y) + e.coarse});
       x0_ = std::min(x0_, boxes.back().x0), x1_ = std::max(x1_, boxes.back().x1);
       y0_ = std::min(y0_, boxes.back().y0), y1_ = std::max(y1_, boxes.back().y1);
     }
@@ -252,94 +260,174 @@ class OperandEdges {
   std::vector<std::uint32_t> members_;
 };
 
-// The check proper, on a problem at a comfortable scale; ulpFloor is the original's smallest
-// ulp at this scale.
-SampleVerdict sample(const Region& subject, const Region& clip, Op op, const Region& result,
-                     const SampleOptions& options, double ulpFloor) {
-  const auto start = std::chrono::steady_clock::now();
-  SampleVerdict v;
-  Box box;
-  box.grow(subject), box.grow(clip), box.grow(result);
-  if (!(box.minX <= box.maxX)) return v;  // everything empty: nothing to check
-  // Halves first: the extent of coordinates near 2^500 must not overflow.
-  const double extent = std::max({(box.maxX / 2 - box.minX / 2) * 2, (box.maxY / 2 - box.minY / 2) * 2,
-                                  std::numeric_limits<double>::min()});
+// The phase of the eight directions around a vertex: a function of the vertex and the seed
+// alone (splitmix64 of its coordinates), so that a vertex met again (an input vertex on an answer,
+// a crossing on the answers of several operations) is sampled at exactly the same points.
+double phaseOf(Point q, std::uint64_t seed) {
+  std::uint64_t h = seed;
+  for (double v : {q.x + 0.0, q.y + 0.0}) {  // + 0.0: -0 and 0 are one vertex
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    h += bits + 0x9E3779B97F4A7C15ull;
+    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+    h ^= h >> 31;
+  }
+  return static_cast<double>(h >> 11) * 0x1p-53 * 2 * std::acos(-1.0);
+}
 
-  OperandEdges operandEdges(subject, clip, options.constructionUlps, ulpFloor);
-  const EvenOddRegion inS(subject), inC(clip), inR(result);
-  auto check = [&](Point p) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-    if (operandEdges.near(p)) {
-      ++v.skipped;
-      return;
-    }
-    const auto r = inR.inside(p), a = inS.inside(p), b = inC.inside(p);
-    if (!r || !a || !b) {
-      ++v.skipped;
-      return;
-    }
-    ++v.checked;
-    if (*r != apply(op, *a, *b)) {
-      if (!v.mismatched) v.firstMismatch = p;
-      ++v.mismatched;
-    }
-  };
-
-  std::mt19937_64 rng(options.seed);
-  std::uniform_real_distribution<double> ux(box.minX, box.maxX), uy(box.minY, box.maxY);
-  for (std::size_t i = 0; i < options.uniformPoints; ++i) check({ux(rng), uy(rng)});
-  if (options.nearVertices) {
-    const double pi = std::acos(-1.0);
-    std::uniform_real_distribution<double> turn(0, 2 * pi);
-    for (const Region* region : {&subject, &clip, &result}) {
-      for (const Ring& ring : *region) {
-        for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-          const Point& q = ring[i];
-          const Point& prev = ring[(i + n - 1) % n];
-          const Point& next = ring[(i + 1) % n];
-          // The vertex's own scale: its shorter non-zero edge.
-          double local = std::numeric_limits<double>::infinity();
-          for (const Point& o : {prev, next}) {
-            const double length = std::hypot(o.x / 2 - q.x / 2, o.y / 2 - q.y / 2) * 2;
-            if (length > 0) local = std::min(local, length);
-          }
-          const double phase = turn(rng);
-          // Both ways along the bisector of the vertex's corner too: a thin spike (a ring of a
-          // 1e-10 star tip) lies between two of the eight rays, never across the bisector.
-          const double ux = prev.x / 2 - q.x / 2, uy = prev.y / 2 - q.y / 2;
-          const double wx = next.x / 2 - q.x / 2, wy = next.y / 2 - q.y / 2;
-          const double lu = std::hypot(ux, uy), lw = std::hypot(wx, wy);
-          double bx = 0, by = 0;
-          if (lu > 0 && lw > 0) {
-            bx = ux / lu + wx / lw, by = uy / lu + wy / lw;
-            const double lb = std::hypot(bx, by);
-            if (lb > 1e-9) {
-              bx /= lb, by /= lb;
-            } else {  // a straight corner: across the edge
-              bx = -uy / lu, by = ux / lu;
-            }
-          }
-          auto around = [&](double radius) {
-            for (int k = 0; k < 8; ++k) {
-              const double a = phase + k * pi / 4;
-              check({q.x + radius * std::cos(a), q.y + radius * std::sin(a)});
-            }
-            if (bx != 0 || by != 0) {
-              check({q.x + radius * bx, q.y + radius * by});
-              check({q.x - radius * bx, q.y - radius * by});
-            }
-          };
-          for (int e : {8, 14, 20, 26}) around(std::ldexp(extent, -e));
-          if (std::isfinite(local)) {
-            for (int e : {2, 5, 10, 20}) around(std::ldexp(local, -e));
-          }
-        }
-      }
+// The points around a vertex q of a ring (prev and next are its neighbours), in a fixed order:
+// eight directions from the vertex's phase and both ways along the corner's bisector, at radii
+// global (extent * 2^-8 .. 2^-26) and local (its shorter edge * 2^-2 .. 2^-20).
+template <class Visit>
+void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t seed, Visit&& visit) {
+  const double pi = std::acos(-1.0);
+  // The vertex's own scale: its shorter non-zero edge.
+  double local = std::numeric_limits<double>::infinity();
+  for (const Point& o : {prev, next}) {
+    const double length = std::hypot(o.x / 2 - q.x / 2, o.y / 2 - q.y / 2) * 2;
+    if (length > 0) local = std::min(local, length);
+  }
+  const double phase = phaseOf(q, seed);
+  // Both ways along the bisector of the vertex's corner too: a thin spike (a ring of a 1e-10
+  // star tip) lies between two of the eight rays, never across the bisector.
+  const double ux = prev.x / 2 - q.x / 2, uy = prev.y / 2 - q.y / 2;
+  const double wx = next.x / 2 - q.x / 2, wy = next.y / 2 - q.y / 2;
+  const double lu = std::hypot(ux, uy), lw = std::hypot(wx, wy);
+  double bx = 0, by = 0;
+  if (lu > 0 && lw > 0) {
+    bx = ux / lu + wx / lw, by = uy / lu + wy / lw;
+    const double lb = std::hypot(bx, by);
+    if (lb > 1e-9) {
+      bx /= lb, by /= lb;
+    } else {  // a straight corner: across the edge
+      bx = -uy / lu, by = ux / lu;
     }
   }
-  v.delta = operandEdges.largestDelta();
-  v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return v;
+  double cosines[8], sines[8];  // the eight directions, the same at every radius
+  for (int k = 0; k < 8; ++k) {
+    const double a = phase + k * pi / 4;
+    cosines[k] = std::cos(a), sines[k] = std::sin(a);
+  }
+  auto around = [&](double radius) {
+    for (int k = 0; k < 8; ++k) visit(Point{q.x + radius * cosines[k], q.y + radius * sines[k]});
+    if (bx != 0 || by != 0) {
+      visit(Point{q.x + radius * bx, q.y + radius * by});
+      visit(Point{q.x - radius * bx, q.y - radius * by});
+    }
+  };
+  for (int e : {8, 14, 20, 26}) around(std::ldexp(extent, -e));
+  if (std::isfinite(local)) {
+    for (int e : {2, 5, 10, 20}) around(std::ldexp(local, -e));
+  }
+}
+
+template <class Visit>
+void aroundVertices(const Region& region, double extent, std::uint64_t seed, Visit&& visit) {
+  for (const Ring& ring : region) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      aroundVertex(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n], extent, seed, visit);
+    }
+  }
+}
+
+// The check proper, on a problem at a comfortable scale (ulpFloor is the original's smallest ulp
+// at this scale), split so that several answers for the same S and C share the work that does
+// not depend on the answer. What a point needs besides the answer (whether it is too near an
+// edge of S or C to judge, and on which side of S and of C it lies) is kept per point: the
+// uniform points and the points around the vertices of S and C (the base, judged against every
+// answer) first, then every point met around an answer's vertices. An answer's vertex that is a
+// vertex of S or C, or a crossing already met on another answer, is sampled at the same points
+// (phaseOf), so most of its points cost one lookup and one even-odd test of the answer, or
+// nothing when they are base points, already judged.
+class Sampler {
+ public:
+  // box: the joint bounding box of everything that will be judged (S, C, and the answers).
+  Sampler(const Region& subject, const Region& clip, const Box& box, const SampleOptions& options, double ulpFloor)
+      : options_(options), box_(box), operandEdges_(subject, clip, options.constructionUlps, ulpFloor),
+        inS_(subject), inC_(clip) {
+    if (!(box.minX <= box.maxX)) return;  // everything empty: nothing to check
+    // Halves first: the extent of coordinates near 2^500 must not overflow.
+    extent_ = std::max({(box.maxX / 2 - box.minX / 2) * 2, (box.maxY / 2 - box.minY / 2) * 2,
+                        std::numeric_limits<double>::min()});
+    auto keep = [&](Point p) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+      const auto [at, fresh] = known_.try_emplace(p, 0);
+      if (!fresh) return;  // a base point already (S and C share a vertex)
+      at->second = sides(p) | kBase;
+      base_.push_back({p, at->second});
+    };
+    std::mt19937_64 rng(options.seed);
+    std::uniform_real_distribution<double> ux(box.minX, box.maxX), uy(box.minY, box.maxY);
+    for (std::size_t i = 0; i < options.uniformPoints; ++i) {
+      const double x = ux(rng);
+      keep({x, uy(rng)});
+    }
+    if (options.nearVertices) {
+      aroundVertices(subject, extent_, options.seed, keep);
+      aroundVertices(clip, extent_, options.seed, keep);
+    }
+  }
+
+  bool holds(const Box& b) const {
+    return !(b.minX <= b.maxX) || (b.minX >= box_.minX && b.maxX <= box_.maxX && b.minY >= box_.minY && b.maxY <= box_.maxY);
+  }
+
+  SampleVerdict check(Op op, const Region& result) {
+    const auto start = std::chrono::steady_clock::now();
+    SampleVerdict v;
+    if (!(box_.minX <= box_.maxX)) return v;
+    const EvenOddRegion inR(result);
+    auto judge = [&](Point p, std::uint8_t state) {
+      const auto r = (state & kSkipped) ? std::nullopt : inR.inside(p);
+      if (!r) {
+        ++v.skipped;
+        return;
+      }
+      ++v.checked;
+      if (*r != apply(op, (state & kInS) != 0, (state & kInC) != 0)) {
+        if (!v.mismatched) v.firstMismatch = p;
+        ++v.mismatched;
+      }
+    };
+    for (const auto& [p, state] : base_) judge(p, state);
+    if (options_.nearVertices) {
+      aroundVertices(result, extent_, options_.seed, [&](Point p) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+        const auto [at, fresh] = known_.try_emplace(p, 0);
+        if (fresh) at->second = sides(p);
+        if (!(at->second & kBase)) judge(p, at->second);
+      });
+    }
+    v.delta = operandEdges_.largestDelta();
+    v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return v;
+  }
+
+ private:
+  static constexpr std::uint8_t kInS = 1, kInC = 2, kSkipped = 4, kBase = 8;
+
+  // kSkipped when p is within the delta of an edge of S or C, or on one; else its sides.
+  std::uint8_t sides(Point p) {
+    if (operandEdges_.near(p)) return kSkipped;
+    const auto a = inS_.inside(p), b = inC_.inside(p);
+    if (!a || !b) return kSkipped;
+    return static_cast<std::uint8_t>((*a ? kInS : 0) | (*b ? kInC : 0));
+  }
+
+  SampleOptions options_;
+  Box box_;
+  OperandEdges operandEdges_;
+  EvenOddRegion inS_, inC_;
+  double extent_ = 0;
+  std::vector<std::pair<Point, std::uint8_t>> base_;
+  std::unordered_map<Point, std::uint8_t, PointHash> known_;
+};
+
+Box boxOf(std::initializer_list<const Region*> regions) {
+  Box box;
+  for (const Region* r : regions) box.grow(*r);
+  return box;
 }
 
 }  // namespace
@@ -348,13 +436,48 @@ SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, cons
                           const SampleOptions& options) {
   const double denormMin = std::numeric_limits<double>::denorm_min();
   const int k = judgingExponent(subject, clip, result);
-  if (k == 0) return sample(subject, clip, op, result, options, denormMin);
+  if (k == 0) return Sampler(subject, clip, boxOf({&subject, &clip, &result}), options, denormMin).check(op, result);
   // Scaled from subnormal coordinates, the original's rounding grid becomes coarse there: its
   // smallest ulp, denorm_min, is 2^k * denorm_min at this scale.
-  SampleVerdict v = sample(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), options,
-                           std::ldexp(denormMin, std::max(k, 0)));
+  const Region s = scaledBy(subject, k), c = scaledBy(clip, k), r = scaledBy(result, k);
+  SampleVerdict v = Sampler(s, c, boxOf({&s, &c, &r}), options, std::ldexp(denormMin, std::max(k, 0))).check(op, r);
   v.delta = std::ldexp(v.delta, -k);
   if (v.firstMismatch) v.firstMismatch = scaledBy(*v.firstMismatch, -k);
+  return v;
+}
+
+struct SamplingJudge::Shared {
+  Region subject, clip;  // as given
+  int k = 0;             // the judging exponent of S and C alone
+  Region scaledSubject, scaledClip;
+  std::optional<Sampler> sampler;
+};
+
+SamplingJudge::SamplingJudge(const Region& subject, const Region& clip, const SampleOptions& options)
+    : options_(options), shared_(std::make_unique<Shared>()) {
+  Shared& sh = *shared_;
+  sh.subject = subject, sh.clip = clip;
+  sh.k = judgingExponent(subject, clip, {});
+  sh.scaledSubject = sh.k == 0 ? subject : scaledBy(subject, sh.k);
+  sh.scaledClip = sh.k == 0 ? clip : scaledBy(clip, sh.k);
+  const double denormMin = std::numeric_limits<double>::denorm_min();
+  sh.sampler.emplace(sh.scaledSubject, sh.scaledClip, boxOf({&sh.scaledSubject, &sh.scaledClip}), options,
+                     sh.k == 0 ? denormMin : std::ldexp(denormMin, std::max(sh.k, 0)));
+}
+
+SamplingJudge::~SamplingJudge() = default;
+
+SampleVerdict SamplingJudge::check(Op op, const Region& result) {
+  Shared& sh = *shared_;
+  // An answer reaching beyond S and C's box, or changing the judging scale (both only when it is
+  // wrong), is judged on its own, over the larger box.
+  if (judgingExponent(sh.subject, sh.clip, result) != sh.k) return sampleCheck(sh.subject, sh.clip, op, result, options_);
+  const Region scaled = sh.k == 0 ? Region() : scaledBy(result, sh.k);
+  const Region& r = sh.k == 0 ? result : scaled;
+  if (!sh.sampler->holds(boxOf({&r}))) return sampleCheck(sh.subject, sh.clip, op, result, options_);
+  SampleVerdict v = sh.sampler->check(op, r);
+  v.delta = std::ldexp(v.delta, -sh.k);
+  if (v.firstMismatch) v.firstMismatch = scaledBy(*v.firstMismatch, -sh.k);
   return v;
 }
 

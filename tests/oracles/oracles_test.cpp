@@ -189,6 +189,58 @@ TEST(Oracles, AgreeOnTheRandomWorkload) {
   EXPECT_GT(fails, 120);
 }
 
+// The answers of one S and C judged together (one arrangement, shared sample points) get the
+// verdicts each gets alone (the zone count may differ: faces cut finer by the other answers'
+// edges have smaller boxes, so fewer zones that could not excuse anything are built): on the random workload and on grid cases (shared vertices, overlapping
+// edges), right answers, damaged ones (largest ring dropped), naive answers (rounding errors
+// beyond the zones), a wrong operation's answer, and answers reaching beyond S and C's box.
+TEST(Oracles, AnswersJudgedTogetherGetTheirOwnVerdicts) {
+  int fails = 0, passes = 0;
+  for (int i = 0; i < 60; ++i) {
+    const std::size_t n = 4 + static_cast<std::size_t>(i) % 12;
+    const bool grid = i % 3 == 0;
+    const Region s = grid ? work::generate("grid", n, i + 1).subject : Region{work::randomRing(n, 2 * i + 1)};
+    const Region c = grid ? work::generate("grid", n, i + 1).clip : Region{work::randomRing(n, 2 * i + 2)};
+    std::vector<oracle::Answer> answers;
+    for (Op op : kAllOps) {
+      Region r = clip(s, c, op, optionsOf(i % 2 ? Variant::Naive : Variant::Exact));
+      if (i % 4 == 1 && !r.empty()) {
+        r.erase(std::max_element(r.begin(), r.end(), [](const Ring& a, const Ring& b) {
+          return std::abs(signedArea(a)) < std::abs(signedArea(b));
+        }));
+      }
+      answers.push_back({op, std::move(r)});
+    }
+    answers.push_back({Op::Union, answers[0].result});                         // a wrong operation's answer
+    answers.push_back({Op::Intersection, {{{-1, -1}, {20, -1}, {20, 20}}}});  // beyond the box
+    const auto together = oracle::exactCheckAll(s, c, answers);
+    oracle::SampleOptions so;
+    so.seed = static_cast<std::uint64_t>(i);
+    oracle::SamplingJudge judge(s, c, so);
+    for (std::size_t j = 0; j < answers.size(); ++j) {
+      const auto alone = oracle::exactCheck(s, c, answers[j].op, answers[j].result);
+      EXPECT_EQ(together[j].pass, alone.pass) << i << " " << j;
+      EXPECT_EQ(together[j].errorAreaExact, alone.errorAreaExact) << i << " " << j;
+      EXPECT_EQ(together[j].beyondRoundingAreaExact, alone.beyondRoundingAreaExact) << i << " " << j;
+      (alone.pass ? passes : fails)++;
+      const auto sampledAlone = oracle::sampleCheck(s, c, answers[j].op, answers[j].result, so);
+      const auto sampledTogether = judge.check(answers[j].op, answers[j].result);
+      EXPECT_EQ(sampledTogether.checked, sampledAlone.checked) << i << " " << j;
+      EXPECT_EQ(sampledTogether.skipped, sampledAlone.skipped) << i << " " << j;
+      EXPECT_EQ(sampledTogether.mismatched, sampledAlone.mismatched) << i << " " << j;
+    }
+    std::vector<std::pair<Region, Region>> pairs;
+    for (std::size_t j = 0; j + 1 < answers.size(); j += 2) pairs.emplace_back(answers[j].result, answers[j + 1].result);
+    const auto differences = oracle::symmetricDifferenceAreas(pairs);
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const double alone = oracle::exactCheck(pairs[k].first, {}, Op::Union, pairs[k].second, {false, false, false}).errorArea;
+      EXPECT_NEAR(differences[k], alone, 1e-12 * (1 + alone)) << i << " " << k;
+    }
+  }
+  EXPECT_GT(passes, 100);
+  EXPECT_GT(fails, 60);
+}
+
 // Judging at the ends of the double range (the clip's own tests at those scales are in
 // tests/clipper/clip_test.cpp).
 // fuzz_clip_exact_oracle: the exact answer is a sliver whose constructed vertices, rounded to the

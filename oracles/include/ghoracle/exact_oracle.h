@@ -26,6 +26,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ghclip/operation.h"
 #include "ghclip/region.h"
@@ -87,6 +89,23 @@ struct ExactOptions {
 // arrangement cannot be built.
 ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const Region& result,
                         const ExactOptions& options = {});
+
+// Several answers for the same S and C (the five operations, or several clippers' answers),
+// judged in one arrangement of S, C and all of them: the arrangement of S and C, the costly part,
+// is built once. Each verdict is the one exactCheck gives for that answer alone (the faces are
+// cut finer by the other answers' edges, the wrong region and the zones are the same). At most
+// 30 answers.
+struct Answer {
+  Op op;
+  Region result;
+};
+std::vector<ExactVerdict> exactCheckAll(const Region& subject, const Region& clip, const std::vector<Answer>& answers,
+                                        const ExactOptions& options = {});
+
+// For each pair (a, b), the even-odd area of their symmetric difference (the midpoint of a
+// certified interval), all pairs in one arrangement: what exactCheck(a, {}, Op::Union, b) calls
+// errorArea. At most 15 pairs.
+std::vector<double> symmetricDifferenceAreas(const std::vector<std::pair<Region, Region>>& pairs);
 
 // The exact answer's boundary rings (points rounded to double: a faithful rounding).
 Region exactAnswer(const Region& subject, const Region& clip, Op op);

@@ -1,7 +1,9 @@
 // The sampling oracle: cheap, CGAL-free, good enough to call inside a fuzzer.
 //
 // Points are drawn (seeded) uniformly in the joint bounding box of S, C and R, and around every
-// vertex of S, C and R in eight directions plus both ways along the corner's bisector, at radii
+// vertex of S, C and R in eight directions (from a phase fixed by the vertex and the seed, so a
+// vertex shared by S and R is sampled at the same points) plus both ways along the corner's
+// bisector, at radii
 // both global (extent * 2^-8, 2^-14, 2^-20, 2^-26) and local (the vertex's shorter edge times
 // 2^-2, 2^-5, 2^-10, 2^-20), so that a small feature next to a large one, or a thin spike, is
 // sampled at its own size. Each point gets three exact even-odd tests (filtered orientation,
@@ -19,6 +21,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include "ghclip/operation.h"
@@ -38,12 +41,31 @@ struct SampleVerdict {
   std::size_t skipped = 0;     // within an edge's delta of an edge of S or C, or on an edge of R
   std::size_t mismatched = 0;  // inside(R) != op(inside(S), inside(C))
   std::optional<Point> firstMismatch;
-  double delta = 0;            // the largest local delta met (most are far smaller)
+  double delta = 0;            // the largest local delta met (most are far smaller); by a
+                               // SamplingJudge, over all its checks so far
   double seconds = 0;
   bool pass() const { return mismatched == 0; }
 };
 
 SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, const Region& result,
                           const SampleOptions& options = {});
+
+// Several answers for one S and C (the five operations, or several clippers' answers) judged
+// with the work that does not depend on the answer done once: the uniform points and the points
+// around the vertices of S and C, their distance to the edges of S and C, and their sides of S
+// and C. Each check gives the verdict sampleCheck gives for the same arguments.
+class SamplingJudge {
+ public:
+  SamplingJudge(const Region& subject, const Region& clip, const SampleOptions& options = {});
+  ~SamplingJudge();
+  SamplingJudge(const SamplingJudge&) = delete;
+  SamplingJudge& operator=(const SamplingJudge&) = delete;
+  SampleVerdict check(Op op, const Region& result);
+
+ private:
+  struct Shared;
+  SampleOptions options_;
+  std::unique_ptr<Shared> shared_;
+};
 
 }  // namespace gh::oracle
