@@ -139,14 +139,18 @@ std::string percent(int part, int whole) {
   return s.str();
 }
 
+Verdict verdictOf(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::Exact: return Verdict::Exact;
+    case Outcome::Rounding: return Verdict::Rounding;
+    case Outcome::BeyondRounding: return Verdict::Beyond;
+    default: return Verdict::Gross;
+  }
+}
+
 Verdict judgeAnswer(const Region& s, const Region& c, Op op, const Region& r, double& relative, std::string& message) {
   try {
-    switch (experiments::judgeAnswer(s, c, op, r, relative)) {
-      case Outcome::Exact: return Verdict::Exact;
-      case Outcome::Rounding: return Verdict::Rounding;
-      case Outcome::BeyondRounding: return Verdict::Beyond;
-      default: return Verdict::Gross;
-    }
+    return verdictOf(experiments::judgeAnswer(s, c, op, r, relative));
   } catch (const oracle::CannotJudge& e) {
     message = std::string("cannot judge: ") + e.what();
     return Verdict::Unjudged;
@@ -368,18 +372,39 @@ int run(int argc, char** argv) {
       const std::size_t n = k.minN + static_cast<std::size_t>(i) % (k.maxN - k.minN + 1);
       const work::Workload w = work::generate(k.name, n, static_cast<std::uint64_t>(i));
       const std::size_t size = vertexCount(w.subject) + vertexCount(w.clip);
-      for (Op op : kAllOps) {
-        for (std::size_t mi = 0; mi < methods.size(); ++mi) {
-          const Method& m = methods[mi];
-          if (m.validInputOnly && !k.valid) continue;
+      for (std::size_t mi = 0; mi < methods.size(); ++mi) {
+        const Method& m = methods[mi];
+        if (m.validInputOnly && !k.valid) continue;
+        // The method's five answers first, then judged together in one arrangement (the same
+        // verdicts as one by one; an answer the oracle cannot read or judge is judged alone).
+        std::vector<IsolatedRun> runs;
+        std::vector<oracle::Answer> answers;
+        for (Op op : kAllOps) {
+          runs.push_back(runner.run(mi, w.subject, w.clip, op));
+          if (runs.back().status == IsolatedRun::Status::Answered) answers.push_back({op, runs.back().result});
+        }
+        std::vector<oracle::ExactVerdict> together;
+        try {
+          together = oracle::exactCheckAll(w.subject, w.clip, answers, {false, false, true});
+        } catch (const std::exception&) {
+          together.clear();
+        }
+        std::size_t answered = 0;
+        for (std::size_t oi = 0; oi < std::size(kAllOps); ++oi) {
+          const Op op = kAllOps[oi];
+          const IsolatedRun& r = runs[oi];
           Cell& cell = cells[op][k.name][m.name];
           Case c;
           c.seed = i;
           c.size = size;
-          const IsolatedRun r = runner.run(mi, w.subject, w.clip, op);
           switch (r.status) {
             case IsolatedRun::Status::Answered:
-              c.verdict = judgeAnswer(w.subject, w.clip, op, r.result, c.relative, c.message);
+              if (!together.empty()) {
+                c.verdict = verdictOf(experiments::outcomeOf(together[answered], c.relative));
+              } else {
+                c.verdict = judgeAnswer(w.subject, w.clip, op, r.result, c.relative, c.message);
+              }
+              ++answered;
               break;
             case IsolatedRun::Status::Refused: c.verdict = Verdict::Refused; break;
             case IsolatedRun::Status::Threw: c.verdict = Verdict::Threw; break;
@@ -414,6 +439,7 @@ int run(int argc, char** argv) {
     return 0;
   }
 
+  fs::create_directories(out);
   // Counterexamples: the smallest failing case of every failing cell, with the wrong faces.
   std::map<std::string, std::map<std::string, std::vector<std::string>>> failingCells;  // method -> verdict kind
   for (Op op : kAllOps) {

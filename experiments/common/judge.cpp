@@ -28,7 +28,10 @@ Judged judge(const Method& m, const Region& subject, const Region& clip, Op op) 
 }
 
 Outcome judgeAnswer(const Region& subject, const Region& clip, Op op, const Region& result, double& relativeError) {
-  const auto v = oracle::exactCheck(subject, clip, op, result, {false, false, true});
+  return outcomeOf(oracle::exactCheck(subject, clip, op, result, {false, false, true}), relativeError);
+}
+
+Outcome outcomeOf(const oracle::ExactVerdict& v, double& relativeError) {
   relativeError = v.relativeError();
   if (v.errorAreaExact == "0") return Outcome::Exact;
   if (v.pass) return Outcome::Rounding;

@@ -22,4 +22,7 @@ Judged judge(const Method& m, const Region& subject, const Region& clip, Op op);
 // oracle::CannotJudge).
 Outcome judgeAnswer(const Region& subject, const Region& clip, Op op, const Region& result, double& relativeError);
 
+// The outcome of one verdict (with its exact error area).
+Outcome outcomeOf(const oracle::ExactVerdict& v, double& relativeError);
+
 }  // namespace gh::experiments
