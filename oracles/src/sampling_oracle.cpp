@@ -49,11 +49,12 @@ bool lineDistanceAtMost(Point a, Point b, Point p, double bound) {
 
 // Which of n equal buckets over [lo, hi] holds v, clamped to the ends: a monotone function of
 // v, so that everything stored under the buckets of [a, b] is found from any v in [a, b]. A
-// zero-width range (NaN) puts everything in bucket 0.
+// zero-width range puts v = lo (NaN) in bucket 0, and v beyond it (infinite) in the last.
 std::size_t bucket(double v, double lo, double hi, std::size_t n) {
   const double f = (v - lo) / (hi - lo) * static_cast<double>(n);
   if (!(f > 0)) return 0;
-  return std::min(n - 1, static_cast<std::size_t>(f));
+  if (!(f < static_cast<double>(n))) return n - 1;  // before the conversion: inf does not fit
+  return static_cast<std::size_t>(f);
 }
 
 // A region's edges in horizontal bands, so that a ray test visits only the edges whose y-range
@@ -171,6 +172,12 @@ class OperandEdges {
   }
 
   double largestDelta() const { return largest_; }
+  // The largest delta any edge can have: a bound on every delta met.
+  double largestCoarseDelta() const {
+    double d = 0;
+    for (const Edge& e : edges_) d = std::max(d, e.coarse);
+    return d;
+  }
 
  private:
   struct Edge {
@@ -276,11 +283,102 @@ double phaseOf(Point q, std::uint64_t seed) {
   return static_cast<double>(h >> 11) * 0x1p-53 * 2 * std::acos(-1.0);
 }
 
+// Segments in a uniform grid, for one question: how far from a vertex q the nearest segment lies
+// that does not pass through q.
+class SegmentGrid {
+ public:
+  explicit SegmentGrid(const std::vector<const Region*>& regions) {
+    for (const Region* r : regions) {
+      for (const Ring& ring : *r) {
+        for (std::size_t i = 0, n = ring.size(); i < n; ++i) segments_.push_back({ring[i], ring[(i + 1) % n]});
+      }
+    }
+    if (segments_.empty()) return;
+    x0_ = y0_ = std::numeric_limits<double>::infinity(), x1_ = y1_ = -x0_;
+    for (const auto& [a, b] : segments_) {
+      x0_ = std::min({x0_, a.x, b.x}), x1_ = std::max({x1_, a.x, b.x});
+      y0_ = std::min({y0_, a.y, b.y}), y1_ = std::max({y1_, a.y, b.y});
+    }
+    auto copies = [&] {
+      std::size_t n = 0;
+      for (const auto& [a, b] : segments_) n += span(a, b);
+      return n;
+    };
+    for (side_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(segments_.size() / 2.0)), 1, 256);
+         side_ > 1 && copies() > 16 * segments_.size(); side_ /= 2) {
+    }
+    start_.assign(side_ * side_ + 1, 0);
+    for (const auto& [a, b] : segments_) forCells(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), [&](std::size_t k) { ++start_[k + 1]; });
+    for (std::size_t k = 0; k + 1 < start_.size(); ++k) start_[k + 1] += start_[k];
+    members_.resize(start_.back());
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < segments_.size(); ++i) {
+      const auto& [a, b] = segments_[i];
+      forCells(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), [&](std::size_t k) { members_[fill[k]++] = i; });
+    }
+  }
+
+  // The least of: the distance from q to every segment that does not pass through q, and the
+  // distances from q to the ends of every segment that does (ends there, or crosses there); cap when all are at least cap. 0 when it cannot tell (a
+  // distance that over- or underflows is taken as 0).
+  double clearance(Point q, double cap) const {
+    double least = cap;
+    if (segments_.empty()) return least;
+    forCells(q.x - cap, q.x + cap, q.y - cap, q.y + cap, [&](std::size_t k) {
+      for (std::size_t m = start_[k]; m < start_[k + 1] && least > 0; ++m) least = std::min(least, distance(q, segments_[members_[m]]));
+    });
+    return least;
+  }
+
+ private:
+  // In halves, so that coordinates near 2^256 do not overflow.
+  static double distance(Point q, const std::pair<Point, Point>& s) {
+    const auto& [a, b] = s;
+    const double dx = b.x / 2 - a.x / 2, dy = b.y / 2 - a.y / 2;
+    if (q == a || q == b) return std::hypot(dx, dy) * 2;
+    const double qx = q.x / 2 - a.x / 2, qy = q.y / 2 - a.y / 2, squared = dx * dx + dy * dy;
+    const double t = squared > 0 ? std::clamp((qx * dx + qy * dy) / squared, 0.0, 1.0) : 0.0;
+    const double d = std::hypot(qx - t * dx, qy - t * dy) * 2;
+    if (!std::isfinite(d) || !std::isfinite(t) || (squared <= 0x1p-1000 && squared != 0)) return 0.0;
+    // A segment through q (a crossing of the operands that is a vertex of the answer) is two
+    // rays from q, as good as two edges ending there: decided exactly.
+    if (d <= 0x1p-40 * std::hypot(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) {
+      return std::min(std::hypot(qx, qy), std::hypot(b.x / 2 - q.x / 2, b.y / 2 - q.y / 2)) * 2;
+    }
+    return d;
+  }
+  std::size_t axis(double v, double lo, double hi) const { return bucket(v, lo, hi, side_); }
+  std::size_t span(Point a, Point b) const {
+    return (axis(std::max(a.x, b.x), x0_, x1_) - axis(std::min(a.x, b.x), x0_, x1_) + 1) *
+           (axis(std::max(a.y, b.y), y0_, y1_) - axis(std::min(a.y, b.y), y0_, y1_) + 1);
+  }
+  template <class F>
+  void forCells(double x0, double x1, double y0, double y1, F&& f) const {
+    for (std::size_t cy = axis(y0, y0_, y1_), ly = axis(y1, y0_, y1_); cy <= ly; ++cy) {
+      for (std::size_t cx = axis(x0, x0_, x1_), lx = axis(x1, x0_, x1_); cx <= lx; ++cx) f(cy * side_ + cx);
+    }
+  }
+  std::vector<std::pair<Point, Point>> segments_;
+  double x0_ = 0, x1_ = 0, y0_ = 0, y1_ = 0;
+  std::size_t side_ = 1;
+  std::vector<std::size_t> start_;
+  std::vector<std::uint32_t> members_;
+};
+
 // The points around a vertex q of a ring (prev and next are its neighbours), in a fixed order:
 // eight directions from the vertex's phase and both ways along the corner's bisector, at radii
 // global (extent * 2^-8 .. 2^-26) and local (its shorter edge * 2^-2 .. 2^-20).
-template <class Visit>
-void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t seed, Visit&& visit) {
+//
+// Radii that add nothing are left out. clearanceBelow(cap) gives c: no edge of S, C or the answer
+// comes within c of q except edges that end at q or cross there, and those reach at least c
+// from q (or c = cap when that holds for cap). Inside the disk of radius c/2 only q's own edges cut, all as rays
+// from q, so the points in one direction at two radii below c/2 lie in the same sector: the same
+// side of S, C and the answer, and the outer one is no nearer an edge (the inner is skipped
+// whenever the outer is, as long as c/2 exceeds every edge's delta, `delta`). Of the radii below
+// c/2, only the largest is sampled.
+template <class Clearance, class Visit>
+void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t seed, double delta,
+                  Clearance&& clearanceBelow, Visit&& visit) {
   const double pi = std::acos(-1.0);
   // The vertex's own scale: its shorter non-zero edge.
   double local = std::numeric_limits<double>::infinity();
@@ -316,56 +414,50 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
       visit(Point{q.x - radius * bx, q.y - radius * by});
     }
   };
-  for (int e : {8, 14, 20, 26}) around(std::ldexp(extent, -e));
+  double radii[8];
+  int count = 0;
+  for (int e : {8, 14, 20, 26}) radii[count++] = std::ldexp(extent, -e);
   if (std::isfinite(local)) {
-    for (int e : {2, 5, 10, 20}) around(std::ldexp(local, -e));
+    for (int e : {2, 5, 10, 20}) radii[count++] = std::ldexp(local, -e);
   }
-}
-
-template <class Visit>
-void aroundVertices(const Region& region, double extent, std::uint64_t seed, Visit&& visit) {
-  for (const Ring& ring : region) {
-    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-      aroundVertex(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n], extent, seed, visit);
+  const double largest = *std::max_element(radii, radii + count);
+  // 0.49 rather than 0.5: the clearance is computed in doubles.
+  const double limit = 0.49 * clearanceBelow(2.5 * largest);
+  double kept = -1;  // the largest radius below the limit
+  if (limit > 2 * delta) {
+    for (int i = 0; i < count; ++i) {
+      if (radii[i] <= limit) kept = std::max(kept, radii[i]);
     }
+  }
+  for (int i = 0; i < count; ++i) {
+    if (kept < 0 || radii[i] > limit || radii[i] == kept) around(radii[i]);
   }
 }
 
 // The check proper, on a problem at a comfortable scale (ulpFloor is the original's smallest ulp
 // at this scale), split so that several answers for the same S and C share the work that does
 // not depend on the answer. What a point needs besides the answer (whether it is too near an
-// edge of S or C to judge, and on which side of S and of C it lies) is kept per point: the
-// uniform points and the points around the vertices of S and C (the base, judged against every
-// answer) first, then every point met around an answer's vertices. An answer's vertex that is a
-// vertex of S or C, or a crossing already met on another answer, is sampled at the same points
-// (phaseOf), so most of its points cost one lookup and one even-odd test of the answer, or
-// nothing when they are base points, already judged.
+// edge of S or C to judge, and on which side of S and of C it lies) is computed once per point
+// and kept: every vertex is sampled at the same points whenever it is met (phaseOf), around S
+// and C for every answer, around an answer's vertices that are vertices of S or C or crossings
+// shared by several answers. Each point is judged once per answer.
 class Sampler {
  public:
   // box: the joint bounding box of everything that will be judged (S, C, and the answers).
   Sampler(const Region& subject, const Region& clip, const Box& box, const SampleOptions& options, double ulpFloor)
-      : options_(options), box_(box), operandEdges_(subject, clip, options.constructionUlps, ulpFloor),
-        inS_(subject), inC_(clip) {
+      : options_(options), box_(box), subject_(subject), clip_(clip),
+        operandEdges_(subject, clip, options.constructionUlps, ulpFloor), inS_(subject), inC_(clip),
+        operandGrid_({&subject, &clip}) {
     if (!(box.minX <= box.maxX)) return;  // everything empty: nothing to check
     // Halves first: the extent of coordinates near 2^500 must not overflow.
     extent_ = std::max({(box.maxX / 2 - box.minX / 2) * 2, (box.maxY / 2 - box.minY / 2) * 2,
                         std::numeric_limits<double>::min()});
-    auto keep = [&](Point p) {
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-      const auto [at, fresh] = known_.try_emplace(p, 0);
-      if (!fresh) return;  // a base point already (S and C share a vertex)
-      at->second = sides(p) | kBase;
-      base_.push_back({p, at->second});
-    };
     std::mt19937_64 rng(options.seed);
     std::uniform_real_distribution<double> ux(box.minX, box.maxX), uy(box.minY, box.maxY);
     for (std::size_t i = 0; i < options.uniformPoints; ++i) {
       const double x = ux(rng);
-      keep({x, uy(rng)});
-    }
-    if (options.nearVertices) {
-      aroundVertices(subject, extent_, options.seed, keep);
-      aroundVertices(clip, extent_, options.seed, keep);
+      const Point p{x, uy(rng)};
+      if (std::isfinite(p.x) && std::isfinite(p.y)) uniform_.push_back({p, sides(p)});
     }
   }
 
@@ -377,6 +469,7 @@ class Sampler {
     const auto start = std::chrono::steady_clock::now();
     SampleVerdict v;
     if (!(box_.minX <= box_.maxX)) return v;
+    ++epoch_;
     const EvenOddRegion inR(result);
     auto judge = [&](Point p, std::uint8_t state) {
       const auto r = (state & kSkipped) ? std::nullopt : inR.inside(p);
@@ -390,14 +483,29 @@ class Sampler {
         ++v.mismatched;
       }
     };
-    for (const auto& [p, state] : base_) judge(p, state);
+    for (const auto& [p, state] : uniform_) judge(p, state);
     if (options_.nearVertices) {
-      aroundVertices(result, extent_, options_.seed, [&](Point p) {
+      const SegmentGrid answerGrid({&result});
+      auto probe = [&](Point p) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-        const auto [at, fresh] = known_.try_emplace(p, 0);
-        if (fresh) at->second = sides(p);
-        if (!(at->second & kBase)) judge(p, at->second);
-      });
+        const auto [at, fresh] = known_.try_emplace(p, Known{});
+        if (fresh) at->second.state = sides(p);
+        if (at->second.epoch == epoch_) return;  // judged for this answer already
+        at->second.epoch = epoch_;
+        judge(p, at->second.state);
+      };
+      const double delta = operandEdges_.largestCoarseDelta();
+      for (const Region* region : {&subject_, &clip_, &result}) {
+        for (const Ring& ring : *region) {
+          for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+            const Point q = ring[i];
+            auto clearance = [&](double cap) {
+              return std::min(operandGrid_.clearance(q, cap), answerGrid.clearance(q, cap));
+            };
+            aroundVertex(ring[(i + n - 1) % n], q, ring[(i + 1) % n], extent_, options_.seed, delta, clearance, probe);
+          }
+        }
+      }
     }
     v.delta = operandEdges_.largestDelta();
     v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -405,7 +513,11 @@ class Sampler {
   }
 
  private:
-  static constexpr std::uint8_t kInS = 1, kInC = 2, kSkipped = 4, kBase = 8;
+  static constexpr std::uint8_t kInS = 1, kInC = 2, kSkipped = 4;
+  struct Known {
+    std::uint8_t state = 0;
+    std::uint64_t epoch = 0;  // the last answer it was judged against
+  };
 
   // kSkipped when p is within the delta of an edge of S or C, or on one; else its sides.
   std::uint8_t sides(Point p) {
@@ -417,11 +529,15 @@ class Sampler {
 
   SampleOptions options_;
   Box box_;
+  const Region& subject_;
+  const Region& clip_;
   OperandEdges operandEdges_;
   EvenOddRegion inS_, inC_;
+  SegmentGrid operandGrid_;
   double extent_ = 0;
-  std::vector<std::pair<Point, std::uint8_t>> base_;
-  std::unordered_map<Point, std::uint8_t, PointHash> known_;
+  std::uint64_t epoch_ = 0;
+  std::vector<std::pair<Point, std::uint8_t>> uniform_;
+  std::unordered_map<Point, Known, PointHash> known_;
 };
 
 Box boxOf(std::initializer_list<const Region*> regions) {
