@@ -268,11 +268,13 @@ std::string rationalText(const EFT& v) {
 // ---------------------------------------------------------------------------------------------
 // Rounding zones (see exact_oracle.h).
 
+// 2^e exactly, from doubles (exact powers of two) in steps of at most 2^+-1000: a few products,
+// not |e| of them (the judging exponent reaches 2200).
 EFT powerOfTwo(int e) {
   EFT p = 1;
-  const EFT factor = e > 0 ? EFT(2) : EFT(0.5);
-  for (int i = 0; i < std::abs(e); ++i) p *= factor;
-  return p;
+  for (; e > 1000; e -= 1000) p *= EFT(std::ldexp(1.0, 1000));
+  for (; e < -1000; e += 1000) p *= EFT(std::ldexp(1.0, -1000));
+  return p * EFT(std::ldexp(1.0, e));
 }
 
 // The doubles a coordinate may round to: [lo, hi] with lo the largest double <= v and hi the
