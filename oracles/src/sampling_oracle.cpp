@@ -138,7 +138,9 @@ class OperandEdges {
       for (const Ring& ring : *r) {
         for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
           const Point a = ring[i], b = ring[(i + 1) % n];
-          if (a != b) edges_.push_back({a, b, deltaAt(magnitude(a, b)), -1, 0, 0});
+          if (a == b) continue;
+          edges_.push_back({a, b, deltaAt(magnitude(a, b)), -1, 0, 0});
+          largestCoarse_ = std::max(largestCoarse_, edges_.back().coarse);
         }
       }
     }
@@ -173,11 +175,7 @@ class OperandEdges {
 
   double largestDelta() const { return largest_; }
   // The largest delta any edge can have: a bound on every delta met.
-  double largestCoarseDelta() const {
-    double d = 0;
-    for (const Edge& e : edges_) d = std::max(d, e.coarse);
-    return d;
-  }
+  double largestCoarseDelta() const { return largestCoarse_; }
 
  private:
   struct Edge {
@@ -260,6 +258,7 @@ class OperandEdges {
   int ulps_;
   double ulpFloor_;
   double largest_ = 0;
+  double largestCoarse_ = 0;
   std::vector<Edge> edges_;
   double x0_ = 0, x1_ = 0, y0_ = 0, y1_ = 0;
   std::size_t side_ = 1;
@@ -319,8 +318,8 @@ class SegmentGrid {
   }
 
   // The least of: the distance from q to every segment that does not pass through q, and the
-  // distances from q to the ends of every segment that does (ends there, or crosses there); cap when all are at least cap. 0 when it cannot tell (a
-  // distance that over- or underflows is taken as 0).
+  // distances from q to the ends of every segment that does (ends there, or crosses there); cap
+  // when all are at least cap. 0 when it cannot tell (a distance that over- or underflows).
   double clearance(Point q, double cap) const {
     double least = cap;
     if (segments_.empty()) return least;
@@ -371,8 +370,8 @@ class SegmentGrid {
 //
 // Radii that add nothing are left out. clearanceBelow(cap) gives c: no edge of S, C or the answer
 // comes within c of q except edges that end at q or cross there, and those reach at least c
-// from q (or c = cap when that holds for cap). Inside the disk of radius c/2 only q's own edges cut, all as rays
-// from q, so the points in one direction at two radii below c/2 lie in the same sector: the same
+// from q (or c = cap when that holds for cap). Inside the disk of radius c/2 only q's own edges
+// cut, all as rays from q, so the points in one direction at two radii below c/2 lie in the same sector: the same
 // side of S, C and the answer, and the outer one is no nearer an edge (the inner is skipped
 // whenever the outer is, as long as c/2 exceeds every edge's delta, `delta`). Of the radii below
 // c/2, only the largest is sampled.
