@@ -6,6 +6,12 @@
 #include "ghio/formats.h"
 #include "ghio/svg.h"
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
 namespace gh {
 namespace {
 
@@ -60,6 +66,68 @@ TEST(GeoJson, RoundTrip) {
   const Region back = io::readGeoJson(io::writeGeoJson(r));
   ASSERT_EQ(back.size(), 1u);
   EXPECT_EQ(back[0][2], r[0][2]);
+}
+
+// Every writer must print digits that read back to the very double: random bit patterns over the
+// whole finite range, subnormals, signed zeros and the extremes, through all three GeoJSON writers.
+std::vector<double> awkwardDoubles() {
+  std::vector<double> v{0.0, -0.0, 5e-324, -5e-324, 2.2250738585072014e-308, 2.2250738585072009e-308,
+                        1.7976931348623157e308, -1.7976931348623157e308, 0.1, 1.0 / 3, 1e23, 9007199254740993.0,
+                        123456789012345678.0, 5e-310, 1e-7, 1e21, 1e22};
+  std::mt19937_64 random(18);
+  while (v.size() < 200000) {
+    const std::uint64_t bits = random();
+    double d;
+    std::memcpy(&d, &bits, sizeof d);
+    if (std::isfinite(d)) v.push_back(d);
+  }
+  return v;
+}
+
+Ring ringOf(const std::vector<double>& values, std::size_t first, std::size_t n) {
+  Ring r;
+  for (std::size_t i = first; i + 1 < first + 2 * n && i + 1 < values.size(); i += 2) {
+    r.push_back({values[i], values[i + 1]});
+  }
+  return r;
+}
+
+std::uint64_t bitsOf(double d) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &d, sizeof bits);
+  return bits;
+}
+
+// The readers keep the closing position the writers add, so `back` has one point more per ring.
+void expectSameBits(const Region& back, const Region& written) {
+  ASSERT_EQ(back.size(), written.size());
+  for (std::size_t i = 0; i < back.size(); ++i) {
+    ASSERT_EQ(back[i].size(), written[i].size() + 1);
+    for (std::size_t k = 0; k < back[i].size(); ++k) {
+      const Point& w = written[i][k % written[i].size()];
+      ASSERT_EQ(bitsOf(back[i][k].x), bitsOf(w.x)) << w.x;
+      ASSERT_EQ(bitsOf(back[i][k].y), bitsOf(w.y)) << w.y;
+    }
+  }
+}
+
+TEST(GeoJson, EveryWriterRoundTripsEveryDouble) {
+  const std::vector<double> values = awkwardDoubles();
+  const Region rings{ringOf(values, 0, 50000), ringOf(values, 100000, 50000)};
+  expectSameBits(io::readGeoJson(io::writeGeoJson(rings)), rings);
+
+  const std::vector<PolygonWithHoles> polygons{{rings[0], {rings[1]}}};
+  expectSameBits(io::readGeoJson(io::writeGeoJson(polygons)), rings);
+
+  const io::RegionPair pair = io::readPair(io::writeGeoJsonPair(Region{rings[1]}, Region{rings[0]}));
+  expectSameBits(pair.subject, Region{rings[1]});
+  expectSameBits(pair.clip, Region{rings[0]});
+}
+
+TEST(GeoJson, EmptyAnswersAreEmptyMultiPolygons) {
+  EXPECT_EQ(io::writeGeoJson(Region{}), R"({"type":"MultiPolygon","coordinates":[]})");
+  EXPECT_EQ(io::writeGeoJson(std::vector<PolygonWithHoles>{}), R"({"type":"MultiPolygon","coordinates":[]})");
+  EXPECT_TRUE(io::readGeoJson(io::writeGeoJson(Region{})).empty());
 }
 
 TEST(GeoJson, MalformedInput) {
