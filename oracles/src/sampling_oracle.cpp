@@ -9,12 +9,11 @@
 #include <limits>
 #include <functional>
 #include <random>
-#include <unordered_map>
 #include <vector>
 
 #include "exact_orientation.h"
 #include "judging_scale.h"
-#include "point_hash.h"
+#include "point_table.h"
 
 namespace gh::oracle {
 namespace {
@@ -88,6 +87,13 @@ class EvenOddRegion {
       const Edge& e = edges_[i];
       for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) members_[fill[k]++] = i;
     }
+    // Each band from the rightmost edge leftwards: a ray test stops at the first edge that lies
+    // wholly left of its point, as every edge after it does (none of them can count).
+    auto right = [&](std::uint32_t i) { return std::max(edges_[i].a.x, edges_[i].b.x); };
+    for (std::size_t k = 0; k < bands_; ++k) {
+      std::sort(members_.begin() + start_[k], members_.begin() + start_[k + 1],
+                [&](std::uint32_t i, std::uint32_t j) { return right(i) > right(j); });
+    }
   }
 
   // Even-odd parity of a rightward ray from p, exactly; nullopt when p lies on an edge (on the
@@ -99,6 +105,7 @@ class EvenOddRegion {
     for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
       const Point& a = edges_[members_[m]].a;
       const Point& b = edges_[members_[m]].b;
+      if (p.x > std::max(a.x, b.x)) break;  // this edge and all after it lie left of p
       if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
       const bool crosses = (a.y > p.y) != (b.y > p.y);
       if (!crosses && (p.x < std::min(a.x, b.x) || p.x > std::max(a.x, b.x))) continue;
@@ -282,6 +289,15 @@ double phaseOf(Point q, std::uint64_t seed) {
   return static_cast<double>(h >> 11) * 0x1p-53 * 2 * std::acos(-1.0);
 }
 
+// |(x, y)|: sqrt of the sum of squares where neither can over- or underflow (glibc's hypot,
+// which guards against both, cost a tenth of the oracle's time), else hypot. Within an ulp or
+// two of hypot: the clearance below is used with a margin (0.49 of it, not 0.5).
+double length(double x, double y) {
+  const double squared = x * x + y * y;
+  if (squared > 0x1p-1000 && squared < 0x1p1000) return std::sqrt(squared);
+  return std::hypot(x, y);
+}
+
 // Segments in a uniform grid, for one question: how far from a vertex q the nearest segment lies
 // that does not pass through q.
 class SegmentGrid {
@@ -334,15 +350,15 @@ class SegmentGrid {
   static double distance(Point q, const std::pair<Point, Point>& s) {
     const auto& [a, b] = s;
     const double dx = b.x / 2 - a.x / 2, dy = b.y / 2 - a.y / 2;
-    if (q == a || q == b) return std::hypot(dx, dy) * 2;
+    if (q == a || q == b) return length(dx, dy) * 2;
     const double qx = q.x / 2 - a.x / 2, qy = q.y / 2 - a.y / 2, squared = dx * dx + dy * dy;
     const double t = squared > 0 ? std::clamp((qx * dx + qy * dy) / squared, 0.0, 1.0) : 0.0;
-    const double d = std::hypot(qx - t * dx, qy - t * dy) * 2;
+    const double d = length(qx - t * dx, qy - t * dy) * 2;
     if (!std::isfinite(d) || !std::isfinite(t) || (squared <= 0x1p-1000 && squared != 0)) return 0.0;
     // A segment through q (a crossing of the operands that is a vertex of the answer) is two
     // rays from q, as good as two edges ending there: decided exactly.
-    if (d <= 0x1p-40 * std::hypot(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) {
-      return std::min(std::hypot(qx, qy), std::hypot(b.x / 2 - q.x / 2, b.y / 2 - q.y / 2)) * 2;
+    if (d <= 0x1p-40 * length(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) {
+      return std::min(length(qx, qy), length(b.x / 2 - q.x / 2, b.y / 2 - q.y / 2)) * 2;
     }
     return d;
   }
@@ -487,11 +503,11 @@ class Sampler {
       const SegmentGrid answerGrid({&result});
       auto probe = [&](Point p) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-        const auto [at, fresh] = known_.try_emplace(p, Known{});
-        if (fresh) at->second.state = sides(p);
-        if (at->second.epoch == epoch_) return;  // judged for this answer already
-        at->second.epoch = epoch_;
-        judge(p, at->second.state);
+        auto [known, fresh] = known_.findOrAdd(p);
+        if (fresh) known.state = sides(p);  // sides() adds nothing to known_: the reference holds
+        if (known.epoch == epoch_) return;  // judged for this answer already
+        known.epoch = epoch_;
+        judge(p, known.state);
       };
       const double delta = operandEdges_.largestCoarseDelta();
       for (const Region* region : {&subject_, &clip_, &result}) {
@@ -514,8 +530,8 @@ class Sampler {
  private:
   static constexpr std::uint8_t kInS = 1, kInC = 2, kSkipped = 4;
   struct Known {
+    std::uint32_t epoch = 0;  // the last answer it was judged against
     std::uint8_t state = 0;
-    std::uint64_t epoch = 0;  // the last answer it was judged against
   };
 
   // kSkipped when p is within the delta of an edge of S or C, or on one; else its sides.
@@ -534,9 +550,9 @@ class Sampler {
   EvenOddRegion inS_, inC_;
   SegmentGrid operandGrid_;
   double extent_ = 0;
-  std::uint64_t epoch_ = 0;
+  std::uint32_t epoch_ = 0;
   std::vector<std::pair<Point, std::uint8_t>> uniform_;
-  std::unordered_map<Point, Known, PointHash> known_;
+  PointTable<Known> known_;
 };
 
 Box boxOf(std::initializer_list<const Region*> regions) {

@@ -1,0 +1,73 @@
+// A map from finite points (by exact coordinates, 0 and -0 one key) to small values, open-addressed
+// in one array of 24-byte slots (an empty slot's key is NaN): the sampling oracle looks up every
+// sample point of every answer here, and a node-per-entry std::unordered_map spent most of that
+// time on cache misses. (The clipper has tables of its own; the judges share no code with it.)
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "ghclip/region.h"
+
+namespace gh::oracle {
+
+template <class Value>
+class PointTable {
+ public:
+  // The value stored under p (finite), default-made if p is new; and whether it was new. The
+  // reference holds until the next insertion.
+  std::pair<Value&, bool> findOrAdd(Point p) {
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    std::size_t i = home(p);
+    for (; !empty(slots_[i]); i = (i + 1) & mask_) {
+      if (slots_[i].key == p) return {slots_[i].value, false};
+    }
+    slots_[i] = {p, Value{}};
+    ++size_;
+    return {slots_[i].value, true};
+  }
+
+  std::size_t size() const { return size_; }
+
+ private:
+  struct Slot {
+    Point key{kNaN, kNaN};
+    Value value{};
+  };
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  static bool empty(const Slot& s) { return s.key.x != s.key.x; }
+
+  std::size_t home(Point p) const {
+    std::uint64_t h = 0;
+    for (double v : {p.x + 0.0, p.y + 0.0}) {  // + 0.0: -0 and 0 are one key
+      std::uint64_t bits;
+      std::memcpy(&bits, &v, sizeof bits);
+      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+      h ^= h >> 29;
+    }
+    return static_cast<std::size_t>(h) & mask_;
+  }
+
+  void grow() {
+    std::vector<Slot> old = std::move(slots_);
+    slots_.assign(old.empty() ? 1024 : 2 * old.size(), Slot{});
+    mask_ = slots_.size() - 1;
+    size_ = 0;
+    for (const Slot& s : old) {
+      if (empty(s)) continue;
+      std::size_t i = home(s.key);
+      while (!empty(slots_[i])) i = (i + 1) & mask_;
+      slots_[i] = s;
+      ++size_;
+    }
+  }
+
+  std::vector<Slot> slots_;
+  std::size_t mask_ = 0;
+  std::size_t size_ = 0;
+};
+
+}  // namespace gh::oracle

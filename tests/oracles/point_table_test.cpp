@@ -1,0 +1,46 @@
+// The sampling oracle's point table: one entry per exact point (0 and -0 alike), values kept
+// across growth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "point_table.h"
+
+namespace gh::oracle {
+namespace {
+
+TEST(PointTable, OneEntryPerExactPointAcrossGrowth) {
+  PointTable<int> table;
+  std::map<std::pair<double, double>, int> reference;  // the same points in an ordered map
+  std::mt19937_64 random(7);
+  std::uniform_int_distribution<int> coordinate(-40, 40);
+  for (int i = 0; i < 20000; ++i) {
+    // Neighbouring doubles too: a table that compared rounded keys would merge them.
+    double x = coordinate(random) / 4.0, y = coordinate(random) / 4.0;
+    if (i % 3 == 0) x = std::nextafter(x, 100.0);
+    auto [value, fresh] = table.findOrAdd({x, y});
+    const auto key = std::make_pair(x + 0.0, y + 0.0);
+    EXPECT_EQ(fresh, reference.count(key) == 0);
+    if (fresh) value = i, reference[key] = i;
+    EXPECT_EQ(value, reference[key]);
+  }
+  EXPECT_EQ(table.size(), reference.size());
+  for (const auto& [key, value] : reference) {
+    auto [found, fresh] = table.findOrAdd({key.first, key.second});
+    EXPECT_FALSE(fresh);
+    EXPECT_EQ(found, value);
+  }
+}
+
+TEST(PointTable, MinusZeroIsZero) {
+  PointTable<int> table;
+  table.findOrAdd({0.0, -0.0}).first = 5;
+  auto [value, fresh] = table.findOrAdd({-0.0, 0.0});
+  EXPECT_FALSE(fresh);
+  EXPECT_EQ(value, 5);
+}
+
+}  // namespace
+}  // namespace gh::oracle
