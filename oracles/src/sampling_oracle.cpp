@@ -110,6 +110,10 @@ class EvenOddRegion {
       const bool crosses = (a.y > p.y) != (b.y > p.y);
       if (!crosses && (p.x < std::min(a.x, b.x) || p.x > std::max(a.x, b.x))) continue;
       if (crosses && p.x > std::max(a.x, b.x)) continue;  // crosses p's line left of p
+      if (crosses && p.x < std::min(a.x, b.x)) {            // right of p: no orientation needed
+        in = !in;
+        continue;
+      }
       const int o = orientation(a, b, p);
       if (o == 0 && p.x >= std::min(a.x, b.x) && p.x <= std::max(a.x, b.x)) return std::nullopt;
       // The edge crosses p's horizontal line to the right of p when p is on its left going
@@ -164,11 +168,7 @@ class OperandEdges {
           p.y < std::min(e.a.y, e.b.y) - e.coarse || p.y > std::max(e.a.y, e.b.y) + e.coarse) {
         continue;
       }
-      if (e.largest < 0) {
-        e.largest = largestCrossing(e);
-        e.delta = deltaAt(e.largest);
-        e.length = std::hypot(e.b.x - e.a.x, e.b.y - e.a.y);
-      }
+      settle(e);
       const double delta = e.delta;
       largest_ = std::max(largest_, delta);
       const double t = along(e, p);
@@ -178,6 +178,27 @@ class OperandEdges {
       if (within) return true;
     }
     return false;
+  }
+
+  // The edges, in order (edges of zero length left out: they cut nothing).
+  std::vector<std::pair<Point, Point>> segments() const {
+    std::vector<std::pair<Point, Point>> out;
+    for (const Edge& e : edges_) out.push_back({e.a, e.b});
+    return out;
+  }
+
+  // Whether edge i's line passes within a quarter of its delta of q (d: q's distance from it in
+  // doubles, for a cheap first look), and `rounding` (the error of a point computed near q) is
+  // within another quarter. Then a point near q that lies on the other side of that line from a
+  // point farther out in the same direction is within half the delta of it (the signed distance
+  // is affine along the direction): skipped by near(), like the points beside an edge that runs
+  // through q exactly.
+  bool passesNear(std::size_t i, Point q, double d, double rounding) {
+    Edge& e = edges_[i];
+    if (!(d <= e.coarse)) return false;  // d is within a few ulps; delta / 4 <= coarse / 4
+    settle(e);
+    if (!(rounding <= e.delta / 4)) return false;
+    return lineDistanceAtMost(e.a, e.b, q, e.delta / 4 * e.length);
   }
 
   double largestDelta() const { return largest_; }
@@ -195,6 +216,13 @@ class OperandEdges {
 
   static double magnitude(Point a) { return std::max(std::abs(a.x), std::abs(a.y)); }
   static double magnitude(Point a, Point b) { return std::max(magnitude(a), magnitude(b)); }
+  // Its delta and length, computed when first needed.
+  void settle(Edge& e) const {
+    if (e.largest >= 0) return;
+    e.largest = largestCrossing(e);
+    e.delta = deltaAt(e.largest);
+    e.length = std::hypot(e.b.x - e.a.x, e.b.y - e.a.y);
+  }
   double deltaAt(double m) const {
     const double ulp = std::nextafter(m, std::numeric_limits<double>::infinity()) - m;
     return (2 * ulps_ + 6) * std::max(ulp, ulpFloor_);
@@ -302,12 +330,57 @@ double length(double x, double y) {
 // that does not pass through q.
 class SegmentGrid {
  public:
-  explicit SegmentGrid(const std::vector<const Region*>& regions) {
-    for (const Region* r : regions) {
-      for (const Ring& ring : *r) {
-        for (std::size_t i = 0, n = ring.size(); i < n; ++i) segments_.push_back({ring[i], ring[(i + 1) % n]});
-      }
+  explicit SegmentGrid(const Region& region) {
+    for (const Ring& ring : region) {
+      for (std::size_t i = 0, n = ring.size(); i < n; ++i) segments_.push_back({ring[i], ring[(i + 1) % n]});
     }
+    index();
+  }
+  explicit SegmentGrid(std::vector<std::pair<Point, Point>> segments) : segments_(std::move(segments)) { index(); }
+
+  // The least of: the distance from q to every segment that does not pass through q, and the
+  // distances from q to the ends of every segment that does (ends there, or crosses there); cap
+  // when all are at least cap. 0 when it cannot tell (a distance that over- or underflows).
+  // passesNear(i, d) may count segment i, d from q and not through it, as passing through q.
+  template <class PassesNear>
+  double clearance(Point q, double cap, PassesNear&& passesNear) const {
+    double least = cap;
+    if (segments_.empty()) return least;
+    forCells(q.x - cap, q.x + cap, q.y - cap, q.y + cap, [&](std::size_t k) {
+      for (std::size_t m = start_[k]; m < start_[k + 1] && least > 0; ++m) {
+        const Distance d = distance(q, segments_[members_[m]]);
+        const bool through = d.interior && d.line < least && passesNear(members_[m], d.line);
+        least = std::min(least, through ? d.ends : d.line);
+      }
+    });
+    return least;
+  }
+  double clearance(Point q, double cap) const {
+    return clearance(q, cap, [](std::size_t, double) { return false; });
+  }
+
+ private:
+  struct Distance {
+    double line;   // from q to the segment (to its ends, for a segment through q), 0 if unknown
+    double ends;   // from q to the nearer end
+    bool interior; // q projects strictly inside the segment, which does not end at q
+  };
+  // In halves, so that coordinates near 2^256 do not overflow.
+  static Distance distance(Point q, const std::pair<Point, Point>& s) {
+    const auto& [a, b] = s;
+    const double dx = b.x / 2 - a.x / 2, dy = b.y / 2 - a.y / 2;
+    if (q == a || q == b) return {length(dx, dy) * 2, length(dx, dy) * 2, false};
+    const double qx = q.x / 2 - a.x / 2, qy = q.y / 2 - a.y / 2, squared = dx * dx + dy * dy;
+    const double t = squared > 0 ? std::clamp((qx * dx + qy * dy) / squared, 0.0, 1.0) : 0.0;
+    const double d = length(qx - t * dx, qy - t * dy) * 2;
+    if (!std::isfinite(d) || !std::isfinite(t) || (squared <= 0x1p-1000 && squared != 0)) return {0.0, 0.0, false};
+    const double ends = std::min(length(qx, qy), length(b.x / 2 - q.x / 2, b.y / 2 - q.y / 2)) * 2;
+    // A segment through q (a crossing of the operands that is a vertex of the answer) is two
+    // rays from q, as good as two edges ending there: decided exactly.
+    if (d <= 0x1p-40 * length(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) return {ends, ends, false};
+    return {d, ends, t > 0 && t < 1};
+  }
+  void index() {
     if (segments_.empty()) return;
     x0_ = y0_ = std::numeric_limits<double>::infinity(), x1_ = y1_ = -x0_;
     for (const auto& [a, b] : segments_) {
@@ -331,36 +404,6 @@ class SegmentGrid {
       const auto& [a, b] = segments_[i];
       forCells(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), [&](std::size_t k) { members_[fill[k]++] = i; });
     }
-  }
-
-  // The least of: the distance from q to every segment that does not pass through q, and the
-  // distances from q to the ends of every segment that does (ends there, or crosses there); cap
-  // when all are at least cap. 0 when it cannot tell (a distance that over- or underflows).
-  double clearance(Point q, double cap) const {
-    double least = cap;
-    if (segments_.empty()) return least;
-    forCells(q.x - cap, q.x + cap, q.y - cap, q.y + cap, [&](std::size_t k) {
-      for (std::size_t m = start_[k]; m < start_[k + 1] && least > 0; ++m) least = std::min(least, distance(q, segments_[members_[m]]));
-    });
-    return least;
-  }
-
- private:
-  // In halves, so that coordinates near 2^256 do not overflow.
-  static double distance(Point q, const std::pair<Point, Point>& s) {
-    const auto& [a, b] = s;
-    const double dx = b.x / 2 - a.x / 2, dy = b.y / 2 - a.y / 2;
-    if (q == a || q == b) return length(dx, dy) * 2;
-    const double qx = q.x / 2 - a.x / 2, qy = q.y / 2 - a.y / 2, squared = dx * dx + dy * dy;
-    const double t = squared > 0 ? std::clamp((qx * dx + qy * dy) / squared, 0.0, 1.0) : 0.0;
-    const double d = length(qx - t * dx, qy - t * dy) * 2;
-    if (!std::isfinite(d) || !std::isfinite(t) || (squared <= 0x1p-1000 && squared != 0)) return 0.0;
-    // A segment through q (a crossing of the operands that is a vertex of the answer) is two
-    // rays from q, as good as two edges ending there: decided exactly.
-    if (d <= 0x1p-40 * length(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) {
-      return std::min(length(qx, qy), length(b.x / 2 - q.x / 2, b.y / 2 - q.y / 2)) * 2;
-    }
-    return d;
   }
   std::size_t axis(double v, double lo, double hi) const { return bucket(v, lo, hi, side_); }
   std::size_t span(Point a, Point b) const {
@@ -462,7 +505,7 @@ class Sampler {
   Sampler(const Region& subject, const Region& clip, const Box& box, const SampleOptions& options, double ulpFloor)
       : options_(options), box_(box), subject_(subject), clip_(clip),
         operandEdges_(subject, clip, options.constructionUlps, ulpFloor), inS_(subject), inC_(clip),
-        operandGrid_({&subject, &clip}) {
+        operandGrid_(operandEdges_.segments()) {
     if (!(box.minX <= box.maxX)) return;  // everything empty: nothing to check
     // Halves first: the extent of coordinates near 2^500 must not overflow.
     extent_ = std::max({(box.maxX / 2 - box.minX / 2) * 2, (box.maxY / 2 - box.minY / 2) * 2,
@@ -500,7 +543,7 @@ class Sampler {
     };
     for (const auto& [p, state] : uniform_) judge(p, state);
     if (options_.nearVertices) {
-      const SegmentGrid answerGrid({&result});
+      const SegmentGrid answerGrid(result);
       auto probe = [&](Point p) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
         auto [known, fresh] = known_.findOrAdd(p);
@@ -514,8 +557,16 @@ class Sampler {
         for (const Ring& ring : *region) {
           for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
             const Point q = ring[i];
+            // An edge of S or C that passes within a rounding of q (q a rounded crossing of
+            // it) counts as passing through q when the points computed near q are rounded far
+            // less than its delta (OperandEdges::passesNear): within the clearance they differ
+            // from the points farther out only where they are skipped. The answer's edges do
+            // not: the points are not skipped near them.
             auto clearance = [&](double cap) {
-              return std::min(operandGrid_.clearance(q, cap), answerGrid.clearance(q, cap));
+              const double m = std::max(std::abs(q.x), std::abs(q.y)) + cap;
+              const double rounding = 2 * (std::nextafter(m, std::numeric_limits<double>::infinity()) - m) + 0x1p-50 * cap;
+              auto passesNear = [&](std::size_t e, double d) { return operandEdges_.passesNear(e, q, d, rounding); };
+              return std::min(operandGrid_.clearance(q, cap, passesNear), answerGrid.clearance(q, cap));
             };
             aroundVertex(ring[(i + n - 1) % n], q, ring[(i + 1) % n], extent_, options_.seed, delta, clearance, probe);
           }
