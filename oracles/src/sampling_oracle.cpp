@@ -14,6 +14,7 @@
 #include "exact_orientation.h"
 #include "judging_scale.h"
 #include "point_table.h"
+#include "ulp.h"
 
 namespace gh::oracle {
 namespace {
@@ -224,8 +225,7 @@ class OperandEdges {
     e.length = std::hypot(e.b.x - e.a.x, e.b.y - e.a.y);
   }
   double deltaAt(double m) const {
-    const double ulp = std::nextafter(m, std::numeric_limits<double>::infinity()) - m;
-    return (2 * ulps_ + 6) * std::max(ulp, ulpFloor_);
+    return (2 * ulps_ + 6) * ulpOf(m, ulpFloor_);
   }
 
   // Where along e a point q projects (clamped to e).
@@ -348,9 +348,10 @@ class SegmentGrid {
     if (segments_.empty()) return least;
     forCells(q.x - cap, q.x + cap, q.y - cap, q.y + cap, [&](std::size_t k) {
       for (std::size_t m = start_[k]; m < start_[k + 1] && least > 0; ++m) {
-        const Distance d = distance(q, segments_[members_[m]]);
+        const auto& s = segments_[members_[m]];
+        const Distance d = distance(q, s);
         const bool through = d.interior && d.line < least && passesNear(members_[m], d.line);
-        least = std::min(least, through ? d.ends : d.line);
+        least = std::min(least, through ? endDistance(q, s) : d.line);
       }
     });
     return least;
@@ -361,24 +362,27 @@ class SegmentGrid {
 
  private:
   struct Distance {
-    double line;   // from q to the segment (to its ends, for a segment through q), 0 if unknown
-    double ends;   // from q to the nearer end
-    bool interior; // q projects strictly inside the segment, which does not end at q
+    double line;    // from q to the segment (to its ends, for a segment through q), 0 if unknown
+    bool interior;  // q projects strictly inside the segment, which does not pass through q
   };
   // In halves, so that coordinates near 2^256 do not overflow.
   static Distance distance(Point q, const std::pair<Point, Point>& s) {
     const auto& [a, b] = s;
     const double dx = b.x / 2 - a.x / 2, dy = b.y / 2 - a.y / 2;
-    if (q == a || q == b) return {length(dx, dy) * 2, length(dx, dy) * 2, false};
+    if (q == a || q == b) return {length(dx, dy) * 2, false};
     const double qx = q.x / 2 - a.x / 2, qy = q.y / 2 - a.y / 2, squared = dx * dx + dy * dy;
     const double t = squared > 0 ? std::clamp((qx * dx + qy * dy) / squared, 0.0, 1.0) : 0.0;
     const double d = length(qx - t * dx, qy - t * dy) * 2;
-    if (!std::isfinite(d) || !std::isfinite(t) || (squared <= 0x1p-1000 && squared != 0)) return {0.0, 0.0, false};
-    const double ends = std::min(length(qx, qy), length(b.x / 2 - q.x / 2, b.y / 2 - q.y / 2)) * 2;
+    if (!std::isfinite(d) || !std::isfinite(t) || (squared <= 0x1p-1000 && squared != 0)) return {0.0, false};
     // A segment through q (a crossing of the operands that is a vertex of the answer) is two
     // rays from q, as good as two edges ending there: decided exactly.
-    if (d <= 0x1p-40 * length(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) return {ends, ends, false};
-    return {d, ends, t > 0 && t < 1};
+    if (d <= 0x1p-40 * length(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) return {endDistance(q, s), false};
+    return {d, t > 0 && t < 1};
+  }
+  // From q to the nearer end of s, in halves.
+  static double endDistance(Point q, const std::pair<Point, Point>& s) {
+    const auto& [a, b] = s;
+    return std::min(length(q.x / 2 - a.x / 2, q.y / 2 - a.y / 2), length(b.x / 2 - q.x / 2, b.y / 2 - q.y / 2)) * 2;
   }
   void index() {
     if (segments_.empty()) return;
@@ -564,7 +568,7 @@ class Sampler {
             // not: the points are not skipped near them.
             auto clearance = [&](double cap) {
               const double m = std::max(std::abs(q.x), std::abs(q.y)) + cap;
-              const double rounding = 2 * (std::nextafter(m, std::numeric_limits<double>::infinity()) - m) + 0x1p-50 * cap;
+              const double rounding = 2 * ulpOf(m) + 0x1p-50 * cap;
               auto passesNear = [&](std::size_t e, double d) { return operandEdges_.passesNear(e, q, d, rounding); };
               return std::min(operandGrid_.clearance(q, cap, passesNear), answerGrid.clearance(q, cap));
             };

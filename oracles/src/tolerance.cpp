@@ -6,15 +6,9 @@
 #include <unordered_set>
 
 #include "point_hash.h"
+#include "ulp.h"
 
 namespace gh::oracle {
-namespace {
-
-double ulpOf(double m, double floor) {
-  return std::max(std::nextafter(m, std::numeric_limits<double>::infinity()) - m, floor);
-}
-
-}  // namespace
 
 double roundingAllowance(const Region& subject, const Region& clip, const Region& result, int ulps,
                          double ulpFloor) {
