@@ -406,5 +406,54 @@ TEST(LocalTolerance, SwappedDisjointXorHasOneCertifiedArea) {
   EXPECT_EQ(oracle::exactArea(swapped).rational, "26/5");
 }
 
+// fuzz_clip_naive (corpus input 07e8f293...): the naive variant's union is wrong near vertices that
+// are rounded crossings of S and C (coordinates as fuzzed, in hex: a repeated closing vertex and
+// the 2^-12 offsets must survive, which a WKT round trip would not). The judge prunes the radii
+// around such a vertex only when an edge of S or C passing near it is within a quarter of its
+// delta (OperandEdges::passesNear); counting every edge near a vertex as passing through it lets
+// this answer pass.
+TEST(SamplingOracle, PruningAtRoundedCrossingsKeepsAWrongUnionWrong) {
+  const Region s{
+      {{0x1.8p+2, 0x1.8p+2},{0x1.c000000002p+2, 0x1.8004p+2},{0x1.0008p+1, 0x1.0008p+1},{0x1.0008p+1, 0x1.0008p+1},
+       {0x1.0008p+1, 0x1.0008p+1},{0x1.0008p+1, 0x1.0008p+1},{0x1.0008p+1, 0x1.0008p+1},{0x1.00008p+1, 0x1p+0},
+       {0x1p+1, 0x0p+0},{0x1.0008p+1, 0x1.0008p+1},},
+      {{0x1.0008p+1, 0x0p+0},{0x0p+0, 0x0p+0},{0x1p-12, 0x1.0008p+1},{0x1.0008p+1, 0x1.0008p+1},
+       {0x1.0008p+1, 0x1.0008p+1},{0x1.0008p+1, 0x1.0008p+1},{0x1.0008p+1, 0x1.0008p+1},{0x1.0002p+3, 0x1p+1},
+       {0x1.0000000000008p+3, 0x1p+0},{0x1.4p+2, -0x0.0000000000003p-1022},{0x1.8p+2, 0x1.c0000002p+2},{0x1.0000000000002p+2, 0x0p+0},
+       {0x1p+1, 0x1p+0},{0x1.8000000000002p+2, 0x1.ffffffffffffdp+1},},};
+  const Region c{
+      {{0x1.4p+2, 0x1p-8},{0x1.cp+2, 0x1p+0},{0x1.8p+0, 0x0p+0},{0x0p+0, 0x1p-21},
+       {0x1p+3, 0x1.9p+1},{0x1.8p+0, -0x0.0000000000002p-1022},{0x1.0000000000001p+2, 0x1.800002p+2},{0x1.0000000000001p+0, 0x1.4p+2},
+       {0x1.0000000000004p+3, 0x1.8p+1},{0x0p+0, 0x1.000000000001p+2},{0x1p+0, 0x1.3fffffffffffep+2},{0x1p+2, 0x1.800000000008p+2},
+       {0x1.8000000002p+2, 0x1.404p+2},{0x1.cp+2, 0x1p+0},{0x1.0000000000003p+3, 0x1.8p+0},{0x0p+0, 0x0p+0},},};
+  const Region wrong{
+      {{0x1.76526203513f5p+2, 0x1.4511f82f59f55p+2},{0x1.c000000002p+2, 0x1.8004p+2},{0x1.8p+2, 0x1.8p+2},{0x1.5571d09adebd8p+2, 0x1.5571d09adebd8p+2},
+       {0x1p+2, 0x1.800000000008p+2},{0x1p+0, 0x1.3fffffffffffep+2},{0x0p+0, 0x1.000000000001p+2},{0x1.c71c71c71c72dp+1, 0x1.c71c71c71c72dp+1},
+       {0x1.071c71c71c71dp+2, 0x1.071c71c71c71dp+2},{0x1.0000000000001p+0, 0x1.4p+2},{0x1.0000000000001p+2, 0x1.800002p+2},{0x1.4924910fac6b6p+1, 0x1.4924910fac6b6p+1},
+       {0x1.0008p+1, 0x1.0008p+1},{0x1.0004cd02981d9p+1, 0x1.334a400c927a8p+0},{0x1.000200300fc1ap+1, 0x1.333ccf4d253cp+0},{0x1.0008p+1, 0x1.0008p+1},
+       {0x1.4001655d19f44p+1, 0x1.33368e790f8e8p+1},{0x1.2aadd00edbbdbp+1, 0x1.00078e45d52dbp+1},{0x1.0008p+1, 0x1.0008p+1},{0x1p-12, 0x1.0008p+1},
+       {0x1.fff6402f7718fp-35, 0x1.00031ff0bc4a5p-21},{0x0p+0, 0x1p-21},{0x1.fff0007fa6b04p-35, 0x1.ffffffffaaad7p-22},{0x0p+0, 0x0p+0},
+       {0x1.8p+0, 0x0p+0},{0x1.0008p+1, 0x0p+0},{0x1.003b3e3f772f9p+1, 0x1.99f8639b0bp-10},{0x1.ff3384fe009b8p+1, 0x1.98f603fec98bdp-9},
+       {0x1.0000000000002p+2, 0x0p+0},{0x1.000ea1c0198ep+2, 0x1.99b102cd58p-9},{0x1.4p+2, 0x1p-8},{0x1.4009d7dbb3f9cp+2, 0x1.139c07b08b84p-8},
+       {0x1.4p+2, -0x0.0000000000003p-1022},{0x1.0000000000008p+3, 0x1p+0},{0x1.0002p+3, 0x1p+1},{0x1.b003c9b818f48p+2, 0x1.0001aaabcc2a2p+1},
+       {0x1.8000000002p+2, 0x1.404p+2},},
+      {{0x1.1ffdca24e0dbcp+2, 0x1.0000a1ac520a7p+2},{0x1.f2252a8c9e177p+1, 0x1.c1bb5aae6c3e3p+1},{0x1.3dcb08d398814p+2, 0x1.b08d3dcb19e09p+1},{0x1.4609a90e33954p+2, 0x1.ea439f659961bp+1},},
+      {{0x1.000064002a101p+1, 0x1.9000a84040292p-1},{0x1.0000300009p+1, 0x1.800048000f63ap-2},{0x1.00017ff6403f6p+1, 0x1.80023ff16242bp-2},{0x1.00031ff0dc49bp+1, 0x1.9004ede84bb36p-1},},
+      {{0x1.00001ec4fb19cp+1, 0x1.ec4fb19c77dap-3},{0x1.00000ba2ead7dp+1, 0x1.745d5af9bcc18p-4},{0x1.00005d14e48e8p+1, 0x1.745f34d6af741p-4},{0x1.0000f623640a8p+1, 0x1.ec562a4b5051p-3},},
+      {{0x1.0000003333334p+1, 0x1.999999edd18p-10},{0x1p+1, 0x0p+0},{0x1.000001998ccfcp+1, 0x1.99999c2b2d979p-10},},
+      {{0x1.47b2fce76b4a8p+2, 0x1.0003d70565d87p+1},{0x1.6a40af533dc51p+2, 0x1.00031ebc58eebp+1},{0x1p+3, 0x1.9p+1},{0x1.52e99ba37ab7ep+2, 0x1.08c682f1e4a87p+1},
+       {0x1.5084e896f4091p+2, 0x1.ce897084c19b4p+0},{0x1.197a4b017fac6p+2, 0x1.64b01a1693108p+0},{0x1.20292abb9b13ap+2, 0x1.c24056447da3cp+0},},
+      {{0x1.45f92c5f8bc5dp+2, 0x1.4e81b4e811916p-1},{0x1.48ceadcc4a375p+2, 0x1.ed3604b26fc61p-1},{0x1.0e7d95bc4f20fp+2, 0x1.95bc609a77498p-1},{0x1.08c462310e014p+2, 0x1.eaf57abd4159p-2},},
+      {{0x1.5e50d79413db3p+2, 0x1.a86bca1afb09fp+1},{0x1.61e1e1e1bcadap+2, 0x1.da5a5a5a6f9dp+1},{0x1.658469ee5846ep+2, 0x1.d8469ee5846ap+1},{0x1.492492492492ep+2, 0x1.adb6db6db6dcp+1},
+       {0x1.5555ed09beaf8p+2, 0x1.aaaa84bd9054ep+1},{0x1.6aaaed09b641cp+2, 0x1.d5552f682a23cp+1},{0x1.0000000000004p+3, 0x1.8p+1},},
+      {{0x1.6ef654b01e07dp+2, 0x1.48bc50d249e94p+2},{0x1.8p+2, 0x1.c0000002p+2},{0x1.600c017fd01e6p+2, 0x1.502a0540d89a4p+2},},
+      {{0x1.aaaaaaaaaa5acp+1, 0x1.555555555695cp-2},{0x1.745d1745d129ep+1, 0x1.1745d1745dac8p-1},{0x1.3b1c66f979d49p+1, 0x1.d8aa9a76387dp-2},{0x1.0e42651a51252p+1, 0x1.c753c0992708p-4},},
+      {{0x1.6323232323233p+1, 0x1.39b9b9b9b9b9dp-1},{0x1.1f7044a10dc66p+1, 0x1.c11f76bde4736p-1},{0x1.a423310e812f8p+1, 0x1.483b830b0e8bp+0},{0x1.3b4ffe65f2f84p+1, 0x1.da475c4d08f6p-2},},};
+  oracle::SampleOptions options;
+  options.uniformPoints = 200;  // as the clip fuzz targets judge
+  EXPECT_FALSE(oracle::sampleCheck(s, c, Op::Union, wrong, options).pass());
+  EXPECT_TRUE(oracle::sampleCheck(s, c, Op::Union, clip(s, c, Op::Union), options).pass());
+}
+
 }  // namespace
 }  // namespace gh
