@@ -1,10 +1,88 @@
 #include "exact_orientation.h"
 
-#include <gmpxx.h>
+#include <gmp.h>
 
 #include <cmath>
 
 namespace gh::oracle {
+namespace {
+
+// a - b as a double when that is exact (Knuth's two-sum error is zero), else nothing.
+bool exactDifference(double a, double b, double& d) {
+  d = a - b;
+  if (!std::isfinite(d)) return false;
+  const double bv = a - d, av = d + bv;
+  return (a - av) + (bv - b) == 0;
+}
+
+// x * y as a double when that is exact: not overflowed, far from the subnormals (where the fma's
+// error would itself be rounded), and the fma's error zero. A zero product is exact only when a
+// factor is zero (an underflow also gives zero).
+bool exactProduct(double x, double y, double& p) {
+  p = x * y;
+  if (x == 0 || y == 0) return true;
+  return std::isfinite(p) && std::abs(p) > 0x1p-900 && std::fma(x, y, -p) == 0;
+}
+
+// The GMP stage: the six coordinates as integers over their smallest power of two (no fractions,
+// no gcd), in numbers kept from call to call so that a call allocates nothing once they have
+// grown to the problem's size.
+class IntegerOrientation {
+ public:
+  IntegerOrientation() {
+    for (mpz_t& z : v_) mpz_init2(z, 128);
+  }
+  ~IntegerOrientation() {
+    for (mpz_t& z : v_) mpz_clear(z);
+  }
+  IntegerOrientation(const IntegerOrientation&) = delete;
+  IntegerOrientation& operator=(const IntegerOrientation&) = delete;
+
+  int sign(Point a, Point b, Point p) {
+    const double c[6] = {a.x, a.y, b.x, b.y, p.x, p.y};
+    // Each non-zero coordinate is m * 2^(e - 53) with m an integer of at most 53 bits.
+    int lowest = 0;
+    bool any = false;
+    for (double x : c) {
+      if (x == 0) continue;
+      int e = 0;
+      std::frexp(x, &e);
+      lowest = any ? std::min(lowest, e - 53) : e - 53, any = true;
+    }
+    for (int i = 0; i < 6; ++i) {
+      int e = 0;
+      const double m = std::ldexp(std::frexp(c[i], &e), 53);  // an integer; 0 for 0
+      mpz_set_d(v_[i], m);
+      if (c[i] != 0) mpz_mul_2exp(v_[i], v_[i], static_cast<mp_bitcnt_t>(e - 53 - lowest));
+    }
+    // (bx - ax) * (py - ay) - (by - ay) * (px - ax)
+    mpz_sub(v_[2], v_[2], v_[0]);  // bx - ax
+    mpz_sub(v_[5], v_[5], v_[1]);  // py - ay
+    mpz_sub(v_[3], v_[3], v_[1]);  // by - ay
+    mpz_sub(v_[4], v_[4], v_[0]);  // px - ax
+    mpz_mul(v_[6], v_[2], v_[5]);
+    mpz_mul(v_[7], v_[3], v_[4]);
+    return mpz_cmp(v_[6], v_[7]) > 0 ? 1 : mpz_cmp(v_[6], v_[7]) < 0 ? -1 : 0;
+  }
+
+ private:
+  mpz_t v_[8];
+};
+
+// Out of line: the filter that decides nearly every call stays a small function.
+[[gnu::noinline]] int orientationBeyondFilter(Point a, Point b, Point p) {
+  // Where the filter cannot decide, the points are usually collinear on a coarse grid: the
+  // differences and products are then exact doubles, and the sign is their comparison.
+  double bx, py, by, px, el, er;
+  if (exactDifference(b.x, a.x, bx) && exactDifference(p.y, a.y, py) && exactDifference(b.y, a.y, by) &&
+      exactDifference(p.x, a.x, px) && exactProduct(bx, py, el) && exactProduct(by, px, er)) {
+    return el > er ? 1 : el < er ? -1 : 0;
+  }
+  static thread_local IntegerOrientation integer;
+  return integer.sign(a, b, p);
+}
+
+}  // namespace
 
 int orientation(Point a, Point b, Point p) {
   const double l = (b.x - a.x) * (p.y - a.y), r = (b.y - a.y) * (p.x - a.x);
@@ -12,9 +90,7 @@ int orientation(Point a, Point b, Point p) {
   if (std::isfinite(magnitude) && magnitude > 0x1p-900 && std::abs(det) > 0x1.0000000000002p-51 * magnitude) {
     return det > 0 ? 1 : -1;
   }
-  const mpq_class bx(b.x), by(b.y), ax(a.x), ay(a.y), px(p.x), py(p.y);
-  const mpq_class exact = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-  return sgn(exact);
+  return orientationBeyondFilter(a, b, p);
 }
 
 }  // namespace gh::oracle

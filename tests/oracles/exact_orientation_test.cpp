@@ -1,0 +1,89 @@
+// The judges' orientation against the plain rational determinant (GMP's mpq, no filter, no
+// shortcut) on inputs built to reach each of its stages: the double filter, the exact-double
+// comparison of collinear grid points, and the integer stage (ulp-apart, huge and subnormal
+// coordinates, differences that overflow, products that underflow).
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "exact_orientation.h"
+
+namespace gh::oracle {
+namespace {
+
+int rationalOrientation(Point a, Point b, Point p) {
+  const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), px(p.x), py(p.y);
+  return sgn(mpq_class((bx - ax) * (py - ay) - (by - ay) * (px - ax)));
+}
+
+// A coordinate from a family chosen by the generator: grid integers, grid values moved by an
+// ulp or by 2^-k, halves and quarters of huge and tiny powers of two, subnormals, and raw random
+// doubles across the whole exponent range.
+double coordinate(std::mt19937_64& rng) {
+  std::uniform_int_distribution<int> family(0, 6), small(-4, 4), bit(1, 60);
+  const double base = small(rng);
+  switch (family(rng)) {
+    case 0: return base;
+    case 1: return std::nextafter(base, small(rng) > 0 ? 10.0 : -10.0);
+    case 2: return base + std::ldexp(1.0, -bit(rng));
+    case 3: return base * std::ldexp(1.0, 1000);
+    case 4: return base * std::ldexp(1.0, -1000);
+    case 5: return base * std::numeric_limits<double>::denorm_min() * (1 + bit(rng));
+    default: {
+      std::uniform_real_distribution<double> mantissa(-1, 1);
+      std::uniform_int_distribution<int> exponent(-1074, 1023);
+      return std::ldexp(mantissa(rng), exponent(rng));
+    }
+  }
+}
+
+TEST(ExactOrientation, AgreesWithTheRationalDeterminantOnEveryStage) {
+  std::mt19937_64 rng(20261124);
+  int zeros = 0, nonzeros = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const Point a{coordinate(rng), coordinate(rng)}, b{coordinate(rng), coordinate(rng)};
+    Point p{coordinate(rng), coordinate(rng)};
+    if (i % 3 == 0) {  // on the line through a and b, or an ulp off it, where the filter gives up
+      const double t = std::uniform_int_distribution<int>(-3, 3)(rng) * 0.5;
+      p = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+      if (i % 2 == 0) p.y = std::nextafter(p.y, 1e300);
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;  // the judges see finite points only
+    }
+    const int expected = rationalOrientation(a, b, p);
+    ASSERT_EQ(orientation(a, b, p), expected)
+        << std::hexfloat << "a=(" << a.x << ", " << a.y << ") b=(" << b.x << ", " << b.y << ") p=(" << p.x << ", "
+        << p.y << ")";
+    (expected == 0 ? zeros : nonzeros) += 1;
+  }
+  // Both answers were reached often: the test says something about the exact stages.
+  EXPECT_GT(zeros, 5000);
+  EXPECT_GT(nonzeros, 10000);
+}
+
+TEST(ExactOrientation, CasesNearTheStagesLimits) {
+  const double tiny = std::numeric_limits<double>::denorm_min(), big = std::numeric_limits<double>::max();
+  const std::vector<std::array<Point, 3>> cases = {
+      {{{0, 0}, {1, 1}, {2, 2}}},                                        // collinear on the grid
+      {{{0, 0}, {3, 1}, {6, std::nextafter(2.0, 3.0)}}},                  // an ulp off the line
+      {{{0, 0}, {0x1p-500, 0x1p-500}, {0x1p-450, 0x1p-450}}},             // products below 2^-900
+      {{{0, 0}, {0x1p-540, 0x1p-530}, {0x1p-530, 0x1p-540}}},             // they underflow to zero
+      {{{0, 0}, {tiny, tiny}, {2 * tiny, 3 * tiny}}},                     // subnormal coordinates
+      {{{-big, -big}, {big, big}, {0, 0}}},                               // differences overflow
+      {{{-big, 0}, {big, 0}, {0, tiny}}},                                 // both at once
+      {{{1e300, 1e-300}, {-1e300, 1e300}, {1e-300, -1e300}}},             // 2,000 bits of range
+      {{{0, 0}, {0, 0}, {0, 0}}},
+  };
+  for (const auto& [a, b, p] : cases) {
+    EXPECT_EQ(orientation(a, b, p), rationalOrientation(a, b, p))
+        << std::hexfloat << "a=(" << a.x << ", " << a.y << ") b=(" << b.x << ", " << b.y << ") p=(" << p.x << ", "
+        << p.y << ")";
+  }
+}
+
+}  // namespace
+}  // namespace gh::oracle
