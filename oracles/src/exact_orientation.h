@@ -6,8 +6,10 @@
 
 namespace gh::oracle {
 
-// Sign of (b - a) x (p - a) as -1, 0 or 1, exactly: Shewchuk's filter in doubles, GMP when it
-// cannot decide (or when a difference overflows or a product underflows).
+// Sign of (b - a) x (p - a) as -1, 0 or 1, exactly: Shewchuk's filter in doubles; where it
+// cannot decide, a comparison of the two products when the differences and products are exact
+// doubles (collinear grid points), else GMP integers (a difference overflows, a product
+// underflows or is inexact). Finite coordinates only.
 int orientation(Point a, Point b, Point p);
 
 }  // namespace gh::oracle
