@@ -342,9 +342,12 @@ class SegmentGrid {
   // distances from q to the ends of every segment that does (ends there, or crosses there); cap
   // when all are at least cap. 0 when it cannot tell (a distance that over- or underflows).
   // passesNear(i, d) may count segment i, d from q and not through it, as passing through q.
+  // With `atQ`, also the segments that end at q or pass through it (decided exactly), each
+  // once, complete whenever the clearance is not 0.
   template <class PassesNear>
-  double clearance(Point q, double cap, PassesNear&& passesNear) const {
+  double clearance(Point q, double cap, PassesNear&& passesNear, std::vector<std::uint32_t>* atQ = nullptr) const {
     double least = cap;
+    if (atQ) atQ->clear();
     if (segments_.empty()) return least;
     forCells(q.x - cap, q.x + cap, q.y - cap, q.y + cap, [&](std::size_t k) {
       for (std::size_t m = start_[k]; m < start_[k + 1] && least > 0; ++m) {
@@ -352,32 +355,39 @@ class SegmentGrid {
         const Distance d = distance(q, s);
         const bool through = d.interior && d.line < least && passesNear(members_[m], d.line);
         least = std::min(least, through ? endDistance(q, s) : d.line);
+        if (atQ && d.atQ) atQ->push_back(members_[m]);
       }
     });
+    if (atQ) {  // a segment is listed in every cell its box meets
+      std::sort(atQ->begin(), atQ->end());
+      atQ->erase(std::unique(atQ->begin(), atQ->end()), atQ->end());
+    }
     return least;
   }
-  double clearance(Point q, double cap) const {
-    return clearance(q, cap, [](std::size_t, double) { return false; });
+  double clearance(Point q, double cap, std::vector<std::uint32_t>* atQ = nullptr) const {
+    return clearance(q, cap, [](std::size_t, double) { return false; }, atQ);
   }
+  const std::pair<Point, Point>& segment(std::uint32_t i) const { return segments_[i]; }
 
  private:
   struct Distance {
     double line;    // from q to the segment (to its ends, for a segment through q), 0 if unknown
     bool interior;  // q projects strictly inside the segment, which does not pass through q
+    bool atQ;       // the segment ends at q or passes through it
   };
   // In halves, so that coordinates near 2^256 do not overflow.
   static Distance distance(Point q, const std::pair<Point, Point>& s) {
     const auto& [a, b] = s;
     const double dx = b.x / 2 - a.x / 2, dy = b.y / 2 - a.y / 2;
-    if (q == a || q == b) return {length(dx, dy) * 2, false};
+    if (q == a || q == b) return {length(dx, dy) * 2, false, true};
     const double qx = q.x / 2 - a.x / 2, qy = q.y / 2 - a.y / 2, squared = dx * dx + dy * dy;
     const double t = squared > 0 ? std::clamp((qx * dx + qy * dy) / squared, 0.0, 1.0) : 0.0;
     const double d = length(qx - t * dx, qy - t * dy) * 2;
-    if (!std::isfinite(d) || !std::isfinite(t) || (squared <= 0x1p-1000 && squared != 0)) return {0.0, false};
+    if (!std::isfinite(d) || !std::isfinite(t) || (squared <= 0x1p-1000 && squared != 0)) return {0.0, false, false};
     // A segment through q (a crossing of the operands that is a vertex of the answer) is two
     // rays from q, as good as two edges ending there: decided exactly.
-    if (d <= 0x1p-40 * length(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) return {endDistance(q, s), false};
-    return {d, t > 0 && t < 1};
+    if (d <= 0x1p-40 * length(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) return {endDistance(q, s), false, true};
+    return {d, t > 0 && t < 1, false};
   }
   // From q to the nearer end of s, in halves.
   static double endDistance(Point q, const std::pair<Point, Point>& s) {
@@ -427,11 +437,65 @@ class SegmentGrid {
   std::vector<std::uint32_t> members_;
 };
 
+// An answer's boundary near a point q, within a radius where it consists of rays from q (its
+// edges that end at q or pass through it, each as far as its other end): there the answer's
+// side changes across each ray and nowhere else, so one ray test at a reference point gives the
+// side of every other point of the disk, from the parity of the rays between their directions
+// (even in all, as every ring that meets q leaves it again; with an odd count, it is not used).
+// Directions are ordered exactly: by half-plane, then by orientation.
+class RaysFrom {
+ public:
+  void reset(Point q, double radius) {
+    q_ = q, radius_ = radius, ends_.clear(), referenced_ = false;
+  }
+  void add(Point end) {
+    if (end != q_) ends_.push_back({end, half(end)});
+  }
+  // Whether p (at `radius` from q, as sampled) gets its side here.
+  bool holds(Point p, double radius) const {
+    return radius <= radius_ && ends_.size() % 2 == 0 && p != q_;
+  }
+  // p's side: nullopt on a ray (on the answer's boundary); rayTest() gives it where no reference
+  // is known yet.
+  template <class RayTest>
+  std::optional<bool> side(Point p, RayTest&& rayTest) {
+    const int h = half(p);
+    std::size_t before = 0;  // rays whose direction comes before p's
+    for (const auto& [end, endHalf] : ends_) {
+      if (endHalf != h) {
+        before += endHalf < h;
+        continue;
+      }
+      const int o = orientation(q_, end, p);
+      if (o == 0) return std::nullopt;  // p's direction: p lies on that edge
+      before += o > 0;
+    }
+    if (!referenced_) {
+      const std::optional<bool> tested = rayTest();
+      if (!tested) return tested;  // cannot happen (p is on no edge), and then no reference
+      referenced_ = true, referenceSide_ = *tested, referenceBefore_ = before;
+      return tested;
+    }
+    return referenceSide_ != (((before ^ referenceBefore_) & 1) != 0);
+  }
+
+ private:
+  // 0 for a direction in [0, pi) from the positive x axis, 1 for [pi, 2 pi).
+  int half(Point p) const { return p.y > q_.y || (p.y == q_.y && p.x > q_.x) ? 0 : 1; }
+
+  Point q_{};
+  double radius_ = -1;
+  std::vector<std::pair<Point, int>> ends_;
+  bool referenced_ = false, referenceSide_ = false;
+  std::size_t referenceBefore_ = 0;
+};
+
 // The points around a vertex q of a ring (prev and next are its neighbours), in a fixed order:
 // eight directions from the vertex's phase and both ways along the corner's bisector, at radii
 // global (extent * 2^-8 .. 2^-26) and local (its shorter edge * 2^-2 .. 2^-20).
 //
-// Radii that add nothing are left out. clearanceBelow(cap) gives c: no edge of S, C or the answer
+// visit(p, r) gets each point p and its radius r. Radii that add nothing are left out.
+// clearanceBelow(cap), called once before the first visit, gives c: no edge of S, C or the answer
 // comes within c of q except edges that end at q or cross there, and those reach at least c
 // from q (or c = cap when that holds for cap). Inside the disk of radius c/2 only q's own edges
 // cut, all as rays from q, so the points in one direction at two radii below c/2 lie in the same sector: the same
@@ -470,10 +534,10 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
     cosines[k] = std::cos(a), sines[k] = std::sin(a);
   }
   auto around = [&](double radius) {
-    for (int k = 0; k < 8; ++k) visit(Point{q.x + radius * cosines[k], q.y + radius * sines[k]});
+    for (int k = 0; k < 8; ++k) visit(Point{q.x + radius * cosines[k], q.y + radius * sines[k]}, radius);
     if (bx != 0 || by != 0) {
-      visit(Point{q.x + radius * bx, q.y + radius * by});
-      visit(Point{q.x - radius * bx, q.y - radius * by});
+      visit(Point{q.x + radius * bx, q.y + radius * by}, radius);
+      visit(Point{q.x - radius * bx, q.y - radius * by}, radius);
     }
   };
   double radii[8];
@@ -510,7 +574,13 @@ class Sampler {
       : options_(options), box_(box), subject_(subject), clip_(clip),
         operandEdges_(subject, clip, options.constructionUlps, ulpFloor), inS_(subject), inC_(clip),
         operandGrid_(operandEdges_.segments()) {
+    std::size_t vertices = 0;
+    for (const Region* r : {&subject, &clip}) {
+      for (const Ring& ring : *r) vertices += ring.size();
+    }
+    operandClearance_.resize(vertices);
     if (!(box.minX <= box.maxX)) return;  // everything empty: nothing to check
+    slack_ = 32 * ulpOf(std::max({std::abs(box.minX), std::abs(box.maxX), std::abs(box.minY), std::abs(box.maxY)}));
     // Halves first: the extent of coordinates near 2^500 must not overflow.
     extent_ = std::max({(box.maxX / 2 - box.minX / 2) * 2, (box.maxY / 2 - box.minY / 2) * 2,
                         std::numeric_limits<double>::min()});
@@ -533,8 +603,9 @@ class Sampler {
     if (!(box_.minX <= box_.maxX)) return v;
     ++epoch_;
     const EvenOddRegion inR(result);
-    auto judge = [&](Point p, std::uint8_t state) {
-      const auto r = (state & kSkipped) ? std::nullopt : inR.inside(p);
+    // side: the answer's side at p when already known (a disk's, below), else null.
+    auto judge = [&](Point p, std::uint8_t state, const std::optional<bool>* side = nullptr) {
+      const auto r = (state & kSkipped) ? std::nullopt : side ? *side : inR.inside(p);
       if (!r) {
         ++v.skipped;
         return;
@@ -548,19 +619,27 @@ class Sampler {
     for (const auto& [p, state] : uniform_) judge(p, state);
     if (options_.nearVertices) {
       const SegmentGrid answerGrid(result);
-      auto probe = [&](Point p) {
+      auto probe = [&](Point p, double radius) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
         auto [known, fresh] = known_.findOrAdd(p);
         if (fresh) known.state = sides(p);  // sides() adds nothing to known_: the reference holds
         if (known.epoch == epoch_) return;  // judged for this answer already
         known.epoch = epoch_;
+        if (!(known.state & kSkipped) && rays_.holds(p, radius)) {
+          const std::optional<bool> side = rays_.side(p, [&] { return inR.inside(p); });
+          judge(p, known.state, &side);
+          return;
+        }
         judge(p, known.state);
       };
       const double delta = operandEdges_.largestCoarseDelta();
+      std::size_t operandVertex = 0;  // an S or C vertex's place in operandClearance_
       for (const Region* region : {&subject_, &clip_, &result}) {
         for (const Ring& ring : *region) {
           for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
             const Point q = ring[i];
+            CachedClearance* cached = region == &result ? nullptr : &operandClearance_[operandVertex++];
+            rays_.reset(q, -1);  // until the clearance below is known
             // An edge of S or C that passes within a rounding of q (q a rounded crossing of
             // it) counts as passing through q when the points computed near q are rounded far
             // less than its delta (OperandEdges::passesNear): within the clearance they differ
@@ -570,7 +649,19 @@ class Sampler {
               const double m = std::max(std::abs(q.x), std::abs(q.y)) + cap;
               const double rounding = 2 * ulpOf(m) + 0x1p-50 * cap;
               auto passesNear = [&](std::size_t e, double d) { return operandEdges_.passesNear(e, q, d, rounding); };
-              return std::min(operandGrid_.clearance(q, cap, passesNear), answerGrid.clearance(q, cap));
+              const double answers = answerGrid.clearance(q, cap, &atQ_);
+              // Within this radius the answer's edges are the rays from q: short of the
+              // clearance by far more than the error of a distance in doubles or of a point's
+              // rounding (a few ulps of the box's magnitude).
+              rays_.reset(q, 0.49 * answers - slack_);
+              for (std::uint32_t e : atQ_) {
+                rays_.add(answerGrid.segment(e).first);
+                rays_.add(answerGrid.segment(e).second);
+              }
+              // An S or C vertex's clearance from S and C is the same for every answer.
+              if (!cached) return std::min(operandGrid_.clearance(q, cap, passesNear), answers);
+              if (cached->cap != cap) *cached = {cap, operandGrid_.clearance(q, cap, passesNear)};
+              return std::min(cached->value, answers);
             };
             aroundVertex(ring[(i + n - 1) % n], q, ring[(i + 1) % n], extent_, options_.seed, delta, clearance, probe);
           }
@@ -597,6 +688,10 @@ class Sampler {
     return static_cast<std::uint8_t>((*a ? kInS : 0) | (*b ? kInC : 0));
   }
 
+  struct CachedClearance {
+    double cap = -1, value = 0;  // clearanceBelow(cap) from S and C's edges
+  };
+
   SampleOptions options_;
   Box box_;
   const Region& subject_;
@@ -605,9 +700,13 @@ class Sampler {
   EvenOddRegion inS_, inC_;
   SegmentGrid operandGrid_;
   double extent_ = 0;
+  double slack_ = 0;  // a bound on the error of a distance, or of a point's rounding, in the box
   std::uint32_t epoch_ = 0;
   std::vector<std::pair<Point, std::uint8_t>> uniform_;
   PointTable<Known> known_;
+  std::vector<CachedClearance> operandClearance_;  // per vertex of S, then of C
+  std::vector<std::uint32_t> atQ_;                 // scratch: the answer's edges at a vertex
+  RaysFrom rays_;                                  // the answer's edges near the vertex sampled
 };
 
 Box boxOf(std::initializer_list<const Region*> regions) {

@@ -6,8 +6,10 @@
 // bisector, at radii
 // both global (extent * 2^-8, 2^-14, 2^-20, 2^-26) and local (the vertex's shorter edge times
 // 2^-2, 2^-5, 2^-10, 2^-20), so that a small feature next to a large one, or a thin spike, is
-// sampled at its own size. Each point gets three exact even-odd tests (filtered orientation,
-// GMP when the filter cannot decide).
+// sampled at its own size. Each point's sides of S, C and R are decided exactly: even-odd ray
+// tests with an exact orientation, except that near a vertex, where the answer's only edges are
+// rays from the vertex, one ray test decides R's side for the points there and the exact order
+// of their directions among the rays the rest.
 //
 // Where a correct answer may legitimately disagree: within the rounding zones (exact_oracle.h),
 // which lie along the lines of S and C. A point is skipped when it is within
