@@ -62,7 +62,8 @@ class IntegerOrientation {
     mpz_sub(v_[4], v_[4], v_[0]);  // px - ax
     mpz_mul(v_[6], v_[2], v_[5]);
     mpz_mul(v_[7], v_[3], v_[4]);
-    return mpz_cmp(v_[6], v_[7]) > 0 ? 1 : mpz_cmp(v_[6], v_[7]) < 0 ? -1 : 0;
+    const int order = mpz_cmp(v_[6], v_[7]);
+    return order > 0 ? 1 : order < 0 ? -1 : 0;
   }
 
  private:

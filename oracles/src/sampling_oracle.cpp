@@ -603,7 +603,7 @@ class Sampler {
     if (!(box_.minX <= box_.maxX)) return v;
     ++epoch_;
     const EvenOddRegion inR(result);
-    // side: the answer's side at p when already known (a disk's, below), else null.
+    // side: the answer's side at p when already known (from the rays at a vertex, below), else null.
     auto judge = [&](Point p, std::uint8_t state, const std::optional<bool>* side = nullptr) {
       const auto r = (state & kSkipped) ? std::nullopt : side ? *side : inR.inside(p);
       if (!r) {
