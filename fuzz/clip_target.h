@@ -21,7 +21,9 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
   const bool strict = variant == Variant::Exact;
   oracle::SampleOptions so;
   so.uniformPoints = 200;
-  std::optional<oracle::SamplingJudge> judge;  // what the five answers share, done once (for valid input)
+  // What the five answers share, done once (for valid input).
+  std::optional<oracle::InvariantJudge> invariants;
+  std::optional<oracle::SamplingJudge> judge;
   for (Op op : kAllOps) {
     Options o = optionsOf(variant);
     Region r;
@@ -39,7 +41,8 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
         if (!std::isfinite(q.x) || !std::isfinite(q.y)) trap("non-finite output", p.subject, p.clip, op);
       }
     }
-    const auto violations = oracle::invariantViolations(p.subject, p.clip, op, r);
+    if (!invariants) invariants.emplace(p.subject, p.clip);
+    const auto violations = invariants->violations(op, r);
     if (!violations.empty()) {
       if (strict) trap("invariant: " + violations.front(), p.subject, p.clip, op);
       record(target, "invariant: " + violations.front(), p.subject, p.clip, op, data, size);

@@ -53,9 +53,10 @@ std::optional<std::size_t> spikeTip(const Ring& ring) {
   return std::nullopt;
 }
 
-// The area inequalities of op, on a problem at a comfortable scale.
-void areaViolations(const Region& S, const Region& C, Op op, const Region& R, int k, std::vector<std::string>& out) {
-  const double a = evenOddArea(S), b = evenOddArea(C), r = evenOddArea(R);
+// The area inequalities of op, on a problem at a comfortable scale (a and b: the areas of S and C).
+void areaViolations(const Region& S, const Region& C, double a, double b, Op op, const Region& R, int k,
+                    std::vector<std::string>& out) {
+  const double r = evenOddArea(R);
   // Slack: the rounding allowance of R's constructed vertices (tolerance.h), the measurement's own error
   // (each slab trapezoid is measured with a few roundings of heights up to the largest |y|, and
   // results below the normal range lose absolute precision), and a relative 1e-9 of the areas.
@@ -90,17 +91,15 @@ void areaViolations(const Region& S, const Region& C, Op op, const Region& R, in
   }
 }
 
-}  // namespace
-
-std::vector<std::string> invariantViolations(const Region& subject, const Region& clip, Op op,
-                                             const Region& result) {
-  std::vector<std::string> out;
+// The checks on the answer's rings alone; false when a coordinate is not finite (then no others
+// are made, and areas would be meaningless).
+bool ringViolations(const Region& result, std::vector<std::string>& out) {
   for (std::size_t r = 0; r < result.size(); ++r) {
     const Ring& ring = result[r];
     for (std::size_t i = 0; i < ring.size(); ++i) {
       if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y)) {
         out.push_back("ring " + std::to_string(r + 1) + " has a non-finite coordinate");
-        return out;  // areas are meaningless now
+        return false;
       }
       if (ring[i] == ring[(i + 1) % ring.size()]) {
         out.push_back("ring " + std::to_string(r + 1) + " has a zero-length edge");
@@ -116,13 +115,49 @@ std::vector<std::string> invariantViolations(const Region& subject, const Region
       out.push_back("ring " + std::to_string(r + 1) + " folds back on itself at vertex " + std::to_string(*i + 1) + " (a zero-width spike)");
     }
   }
-  // Areas are measured on a copy at a comfortable scale (judging_scale.h): at subnormal or
-  // 1e300 magnitudes the floating-point measurement itself would under- or overflow.
-  const int k = judgingExponent(subject, clip, result);
+  return true;
+}
+
+// Areas are measured on a copy at a comfortable scale (judging_scale.h): at subnormal or 1e300
+// magnitudes the floating-point measurement itself would under- or overflow.
+void areaViolations(const Region& subject, const Region& clip, Op op, const Region& result, int k,
+                    std::vector<std::string>& out) {
   if (k == 0) {
-    areaViolations(subject, clip, op, result, 0, out);
+    areaViolations(subject, clip, evenOddArea(subject), evenOddArea(clip), op, result, 0, out);
+    return;
+  }
+  const Region s = scaledBy(subject, k), c = scaledBy(clip, k);
+  areaViolations(s, c, evenOddArea(s), evenOddArea(c), op, scaledBy(result, k), k, out);
+}
+
+}  // namespace
+
+std::vector<std::string> invariantViolations(const Region& subject, const Region& clip, Op op,
+                                             const Region& result) {
+  std::vector<std::string> out;
+  if (!ringViolations(result, out)) return out;
+  areaViolations(subject, clip, op, result, judgingExponent(subject, clip, result), out);
+  return out;
+}
+
+InvariantJudge::InvariantJudge(const Region& subject, const Region& clip)
+    : subject_(subject), clip_(clip), k_(judgingExponent(subject, clip, {})) {
+  if (k_ != 0) scaledSubject_ = scaledBy(subject, k_), scaledClip_ = scaledBy(clip, k_);
+  subjectArea_ = evenOddArea(k_ == 0 ? subject_ : scaledSubject_);
+  clipArea_ = evenOddArea(k_ == 0 ? clip_ : scaledClip_);
+}
+
+std::vector<std::string> InvariantJudge::violations(Op op, const Region& result) const {
+  std::vector<std::string> out;
+  if (!ringViolations(result, out)) return out;
+  // An answer that changes the judging scale (only a wrong one can) is measured at its own.
+  const int k = judgingExponent(subject_, clip_, result);
+  if (k != k_) {
+    areaViolations(subject_, clip_, op, result, k, out);
+  } else if (k == 0) {
+    areaViolations(subject_, clip_, subjectArea_, clipArea_, op, result, 0, out);
   } else {
-    areaViolations(scaledBy(subject, k), scaledBy(clip, k), op, scaledBy(result, k), k, out);
+    areaViolations(scaledSubject_, scaledClip_, subjectArea_, clipArea_, op, scaledBy(result, k), k, out);
   }
   return out;
 }

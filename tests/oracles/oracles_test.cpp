@@ -195,7 +195,7 @@ TEST(Oracles, AgreeOnTheRandomWorkload) {
 // edges), right answers, damaged ones (largest ring dropped), naive answers (rounding errors
 // beyond the zones), a wrong operation's answer, and answers reaching beyond S and C's box.
 TEST(Oracles, AnswersJudgedTogetherGetTheirOwnVerdicts) {
-  int fails = 0, passes = 0;
+  int fails = 0, passes = 0, violating = 0;
   for (int i = 0; i < 60; ++i) {
     const std::size_t n = 4 + static_cast<std::size_t>(i) % 12;
     const bool grid = i % 3 == 0;
@@ -217,7 +217,11 @@ TEST(Oracles, AnswersJudgedTogetherGetTheirOwnVerdicts) {
     oracle::SampleOptions so;
     so.seed = static_cast<std::uint64_t>(i);
     oracle::SamplingJudge judge(s, c, so);
+    const oracle::InvariantJudge invariants(s, c);
     for (std::size_t j = 0; j < answers.size(); ++j) {
+      const auto violations = invariants.violations(answers[j].op, answers[j].result);
+      EXPECT_EQ(violations, oracle::invariantViolations(s, c, answers[j].op, answers[j].result)) << i << " " << j;
+      violating += !violations.empty();
       const auto alone = oracle::exactCheck(s, c, answers[j].op, answers[j].result);
       EXPECT_EQ(together[j].pass, alone.pass) << i << " " << j;
       EXPECT_EQ(together[j].errorAreaExact, alone.errorAreaExact) << i << " " << j;
@@ -239,6 +243,33 @@ TEST(Oracles, AnswersJudgedTogetherGetTheirOwnVerdicts) {
   }
   EXPECT_GT(passes, 100);
   EXPECT_GT(fails, 60);
+  EXPECT_GT(violating, 20);
+}
+
+// The invariants' operand areas, measured once, at the ends of the double range too: a judge
+// that kept them at the wrong scale, or for an answer that changes the scale, says otherwise.
+TEST(Oracles, InvariantsJudgedTogetherGetTheirOwnVerdicts) {
+  for (double scale : {1.0, 0x1p-1060, 0x1p-600, 0x1p400, 0x1p480}) {
+    const auto scaled = [&](Ring r) {
+      for (Point& p : r) p = {p.x * scale, p.y * scale};
+      return r;
+    };
+    const Region s{scaled(rect(0, 0, 4, 4))}, c{scaled(rect(2, 2, 6, 6))};
+    const oracle::InvariantJudge invariants(s, c);
+    std::vector<std::pair<Op, Region>> answers;
+    for (Op op : kAllOps) answers.push_back({op, clip(s, c, op)});
+    answers.push_back({Op::Intersection, {scaled(rect(0, 0, 6, 6))}});              // too large
+    answers.push_back({Op::Union, {scaled(rect(0, 0, 1, 1))}});                     // too small
+    // Too large, with a ring that no common scale holds exactly next to 2^-1060.
+    answers.push_back({Op::Union, {scaled(rect(0, 0, 6, 6)), rect(0, 0, 0.1, 0x1p-30)}});
+    int violating = 0;
+    for (const auto& [op, r] : answers) {
+      const auto violations = invariants.violations(op, r);
+      EXPECT_EQ(violations, oracle::invariantViolations(s, c, op, r)) << scale << " " << name(op);
+      violating += !violations.empty();
+    }
+    EXPECT_EQ(violating, 3) << scale;
+  }
 }
 
 // Judging at the ends of the double range (the clip's own tests at those scales are in
