@@ -204,6 +204,32 @@ class OperandEdges {
     return lineDistanceAtMost(e.a, e.b, q, e.delta / 4 * e.length);
   }
 
+  // Whether an edge i passes through q in the sense of passesNear (q projecting strictly inside
+  // it), and the segment ab runs along it: a and b within an eighth of its delta of its line. Then
+  // ab's line passes within 3/8 of the delta of q, and a point near q that lies on the other side
+  // of ab from a point farther out in the same direction is within half the delta of edge i's
+  // line, within 3/4 of it as computed: skipped by near(), like the points beside the edge.
+  bool carries(Point q, Point a, Point b, double rounding) {
+    if (edges_.empty()) return false;
+    const std::size_t k = cell(q.x, q.y);
+    for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
+      Edge& e = edges_[members_[m]];
+      if (q.x < std::min(e.a.x, e.b.x) - e.coarse || q.x > std::max(e.a.x, e.b.x) + e.coarse ||
+          q.y < std::min(e.a.y, e.b.y) - e.coarse || q.y > std::max(e.a.y, e.b.y) + e.coarse) {
+        continue;
+      }
+      settle(e);
+      if (!(rounding <= e.delta / 4)) continue;
+      const double t = along(e, q);
+      if (!(t > 0 && t < 1)) continue;
+      if (lineDistanceAtMost(e.a, e.b, q, e.delta / 4 * e.length) && lineDistanceAtMost(e.a, e.b, a, e.delta / 8 * e.length) &&
+          lineDistanceAtMost(e.a, e.b, b, e.delta / 8 * e.length)) {
+        return true;
+      }
+    }
+    return false;
+  }
+
   double largestDelta() const { return largest_; }
   // The largest delta any edge can have: a bound on every delta met.
   double largestCoarseDelta() const { return largestCoarse_; }
@@ -345,11 +371,14 @@ class SegmentGrid {
   // when all are at least cap. 0 when it cannot tell (a distance that over- or underflows).
   // passesNear(i, d) may count segment i, d from q and not through it, as passing through q.
   // With `atQ`, also the segments that end at q or pass through it (decided exactly), each
-  // once, complete whenever the clearance is not 0.
+  // once, complete whenever the clearance is not 0; with `strict`, the clearance with no
+  // segment counted as passing through q by passesNear (never more than the one returned).
   template <class PassesNear>
-  double clearance(Point q, double cap, PassesNear&& passesNear, std::vector<std::uint32_t>* atQ = nullptr) const {
-    double least = cap;
+  double clearance(Point q, double cap, PassesNear&& passesNear, std::vector<std::uint32_t>* atQ = nullptr,
+                   double* strict = nullptr) const {
+    double least = cap, strictLeast = cap;
     if (atQ) atQ->clear();
+    if (strict) *strict = cap;
     if (segments_.empty()) return least;
     forCells(q.x - cap, q.x + cap, q.y - cap, q.y + cap, [&](std::size_t k) {
       for (std::size_t m = start_[k]; m < start_[k + 1] && least > 0; ++m) {
@@ -362,9 +391,11 @@ class SegmentGrid {
         const Distance d = distance(q, s);
         const bool through = d.interior && d.line < least && passesNear(members_[m], d.line);
         least = std::min(least, through ? endDistance(q, s) : d.line);
+        strictLeast = std::min(strictLeast, d.line);
         if (atQ && d.atQ) atQ->push_back(members_[m]);
       }
     });
+    if (strict) *strict = std::min(strictLeast, least);
     if (atQ) {  // a segment is listed in every cell its box meets
       std::sort(atQ->begin(), atQ->end());
       atQ->erase(std::unique(atQ->begin(), atQ->end()), atQ->end());
@@ -651,7 +682,7 @@ class Sampler {
             // it) counts as passing through q when the points computed near q are rounded far
             // less than its delta (OperandEdges::passesNear): within the clearance they differ
             // from the points farther out only where they are skipped. The answer's edges do
-            // not: the points are not skipped near them.
+            // only where they run along such an edge: elsewhere the points are not skipped near them.
             auto clearance = [&](double cap) {
               // A point q + r * u (r < cap) is computed within half an ulp of m, plus 2^-53 r
               // for the product, of the exact point on its ray, per coordinate: within
@@ -661,11 +692,18 @@ class Sampler {
               const double m = std::max(std::abs(q.x), std::abs(q.y)) + cap;
               const double rounding = ulpOf(m) + 0x1p-51 * cap;
               auto passesNear = [&](std::size_t e, double d) { return operandEdges_.passesNear(e, q, d, rounding); };
-              const double answers = answerGrid.clearance(q, cap, &atQ_);
+              // An answer's edge that runs along such an edge of S or C (a ring of the answer
+              // passing a rounded crossing that is a vertex of another ring) counts as passing
+              // through q too (OperandEdges::carries), for the radii; not for the rays below.
+              auto carried = [&](std::size_t e, double d) {
+                return d <= delta && operandEdges_.carries(q, answerGrid.segment(e).first, answerGrid.segment(e).second, rounding);
+              };
+              double strictAnswers = 0;
+              const double answers = answerGrid.clearance(q, cap, carried, &atQ_, &strictAnswers);
               // Within this radius the answer's edges are the rays from q: short of the
               // clearance by far more than the error of a distance in doubles or of a point's
               // rounding (a few ulps of the box's magnitude).
-              rays_.reset(q, 0.49 * answers - slack_);
+              rays_.reset(q, 0.49 * strictAnswers - slack_);
               for (std::uint32_t e : atQ_) {
                 rays_.add(answerGrid.segment(e).first);
                 rays_.add(answerGrid.segment(e).second);
