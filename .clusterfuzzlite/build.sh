@@ -7,7 +7,8 @@ SOURCE="${SRC}/ghclip"
 BUILD="${WORK:-/tmp}/ghclip-fuzz-build"
 # CGAL's arrangement iterators downcast in a way UBSan's vptr check flags inside CGAL itself.
 CXXFLAGS="$CXXFLAGS -fno-sanitize=vptr"
-cmake -S "$SOURCE" -B "$BUILD" -G Ninja -DGHCLIP_FUZZ=ON -DCMAKE_BUILD_TYPE=Release \
+# The judges too are built with the engine's sanitizers (CMakeLists.txt: GHCLIP_FUZZ_SANITIZE_JUDGES).
+cmake -S "$SOURCE" -B "$BUILD" -G Ninja -DGHCLIP_FUZZ=ON -DGHCLIP_FUZZ_SANITIZE_JUDGES=ON -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_C_COMPILER="$CC" -DCMAKE_CXX_COMPILER="$CXX" \
   -DCMAKE_C_FLAGS="$CFLAGS" -DCMAKE_CXX_FLAGS="$CXXFLAGS"
 TARGETS=(fuzz_clip_naive fuzz_clip_sweep fuzz_clip_exact fuzz_clip_exact_oracle fuzz_diff_vatti fuzz_read)
