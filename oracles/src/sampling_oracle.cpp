@@ -204,7 +204,7 @@ class OperandEdges {
     return lineDistanceAtMost(e.a, e.b, q, e.delta / 4 * e.length);
   }
 
-  // Whether an edge i passes through q in the sense of passesNear (q projecting strictly inside
+  // Whether an edge passes through q in the sense of passesNear (q projecting strictly inside
   // it), and the segment ab runs along it: a and b within an eighth of its delta of its line. Then
   // ab's line passes within 3/8 of the delta of q, and a point near q that lies on the other side
   // of ab from a point farther out in the same direction is within half the delta of edge i's

@@ -2,7 +2,6 @@
 // input): finite coordinates, no zero-length edges, and the area inequalities of the operation
 // (intersection no larger than either operand, union no smaller, differences no larger than
 // their minuend, xor no larger than the sum), with slack for rounding.
-
 #pragma once
 
 #include <string>
