@@ -161,26 +161,14 @@ class OperandEdges {
 
   // Whether p is within the local delta of an edge.
   bool near(Point p) {
-    if (edges_.empty()) return false;
-    const std::size_t k = cell(p.x, p.y);
-    for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
-      Edge& e = edges_[members_[m]];
-      if (p.x < std::min(e.a.x, e.b.x) - e.coarse || p.x > std::max(e.a.x, e.b.x) + e.coarse ||
-          p.y < std::min(e.a.y, e.b.y) - e.coarse || p.y > std::max(e.a.y, e.b.y) + e.coarse) {
-        continue;
-      }
-      settle(e);
-      const double delta = e.delta;
-      largest_ = std::max(largest_, delta);
+    return anyEdgeAround(p, [&](const Edge& e) {
+      largest_ = std::max(largest_, e.delta);
       // Farther than delta from the edge's line is farther from every point of it: most
       // candidates end here, before the division that finds where p projects.
-      if (!lineDistanceAtMost(e.a, e.b, p, delta * e.length)) continue;
+      if (!lineDistanceAtMost(e.a, e.b, p, e.delta * e.length)) return false;
       const double t = along(e, p);
-      const bool within = (t > 0 && t < 1) || std::min(std::hypot(p.x - e.a.x, p.y - e.a.y),
-                                                       std::hypot(p.x - e.b.x, p.y - e.b.y)) <= delta;
-      if (within) return true;
-    }
-    return false;
+      return (t > 0 && t < 1) || std::min(std::hypot(p.x - e.a.x, p.y - e.a.y), std::hypot(p.x - e.b.x, p.y - e.b.y)) <= e.delta;
+    });
   }
 
   // The edges, in order (edges of zero length left out: they cut nothing).
@@ -207,27 +195,15 @@ class OperandEdges {
   // Whether an edge passes through q in the sense of passesNear (q projecting strictly inside
   // it), and the segment ab runs along it: a and b within an eighth of its delta of its line. Then
   // ab's line passes within 3/8 of the delta of q, and a point near q that lies on the other side
-  // of ab from a point farther out in the same direction is within half the delta of edge i's
+  // of ab from a point farther out in the same direction is within half the delta of that edge's
   // line, within 3/4 of it as computed: skipped by near(), like the points beside the edge.
   bool carries(Point q, Point a, Point b, double rounding) {
-    if (edges_.empty()) return false;
-    const std::size_t k = cell(q.x, q.y);
-    for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
-      Edge& e = edges_[members_[m]];
-      if (q.x < std::min(e.a.x, e.b.x) - e.coarse || q.x > std::max(e.a.x, e.b.x) + e.coarse ||
-          q.y < std::min(e.a.y, e.b.y) - e.coarse || q.y > std::max(e.a.y, e.b.y) + e.coarse) {
-        continue;
-      }
-      settle(e);
-      if (!(rounding <= e.delta / 4)) continue;
+    return anyEdgeAround(q, [&](const Edge& e) {
+      if (!(rounding <= e.delta / 4)) return false;
       const double t = along(e, q);
-      if (!(t > 0 && t < 1)) continue;
-      if (lineDistanceAtMost(e.a, e.b, q, e.delta / 4 * e.length) && lineDistanceAtMost(e.a, e.b, a, e.delta / 8 * e.length) &&
-          lineDistanceAtMost(e.a, e.b, b, e.delta / 8 * e.length)) {
-        return true;
-      }
-    }
-    return false;
+      return t > 0 && t < 1 && lineDistanceAtMost(e.a, e.b, q, e.delta / 4 * e.length) &&
+             lineDistanceAtMost(e.a, e.b, a, e.delta / 8 * e.length) && lineDistanceAtMost(e.a, e.b, b, e.delta / 8 * e.length);
+    });
   }
 
   double largestDelta() const { return largest_; }
@@ -242,6 +218,23 @@ class OperandEdges {
     double delta;    // the delta of that and
     double length;   // its length
   };
+
+  // Whether test(e) holds for an edge e (settled) whose box, widened by its coarse delta, holds p.
+  template <class Test>
+  bool anyEdgeAround(Point p, Test&& test) {
+    if (edges_.empty()) return false;
+    const std::size_t k = cell(p.x, p.y);
+    for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
+      Edge& e = edges_[members_[m]];
+      if (p.x < std::min(e.a.x, e.b.x) - e.coarse || p.x > std::max(e.a.x, e.b.x) + e.coarse ||
+          p.y < std::min(e.a.y, e.b.y) - e.coarse || p.y > std::max(e.a.y, e.b.y) + e.coarse) {
+        continue;
+      }
+      settle(e);
+      if (test(static_cast<const Edge&>(e))) return true;
+    }
+    return false;
+  }
 
   static double magnitude(Point a) { return std::max(std::abs(a.x), std::abs(a.y)); }
   static double magnitude(Point a, Point b) { return std::max(magnitude(a), magnitude(b)); }
