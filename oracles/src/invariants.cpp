@@ -154,11 +154,11 @@ std::vector<std::string> InvariantJudge::violations(Op op, const Region& result)
   const int k = judgingExponent(subject_, clip_, result);
   if (k != k_) {
     areaViolations(subject_, clip_, op, result, k, out);
-  } else if (k == 0) {
-    areaViolations(subject_, clip_, subjectArea_, clipArea_, op, result, 0, out);
-  } else {
-    areaViolations(scaledSubject_, scaledClip_, subjectArea_, clipArea_, op, scaledBy(result, k), k, out);
+    return out;
   }
+  const Region scaled = k == 0 ? Region() : scaledBy(result, k);
+  areaViolations(k == 0 ? subject_ : scaledSubject_, k == 0 ? clip_ : scaledClip_, subjectArea_, clipArea_, op,
+                 k == 0 ? result : scaled, k, out);
   return out;
 }
 

@@ -388,7 +388,7 @@ class SegmentGrid {
         if (atQ && d.atQ) atQ->push_back(members_[m]);
       }
     });
-    if (strict) *strict = std::min(strictLeast, least);
+    if (strict) *strict = strictLeast;  // never more than least: d.line <= endDistance
     if (atQ) {  // a segment is listed in every cell its box meets
       std::sort(atQ->begin(), atQ->end());
       atQ->erase(std::unique(atQ->begin(), atQ->end()), atQ->end());
