@@ -1,12 +1,12 @@
 #include "cleanup.h"
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
 #include <memory>
 #include <unordered_map>
 
 #include "operand.h"
+#include "point_hash.h"
 #include "recycled.h"
 #include "predicates/orientation.h"
 
@@ -16,17 +16,6 @@ namespace {
 struct PointLess {
   bool operator()(const Point& a, const Point& b) const { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 };
-// Equal points hash alike: -0.0 and 0.0 compare equal, so both hash as 0.0.
-struct PointHash {
-  std::size_t operator()(const Point& p) const {
-    const double px = p.x + 0.0, py = p.y + 0.0;
-    std::uint64_t x, y;
-    std::memcpy(&x, &px, 8), std::memcpy(&y, &py, 8);
-    std::uint64_t h = (x ^ (y * 0x9E3779B97F4A7C15ull)) * 0xBF58476D1CE4E5B9ull;
-    return static_cast<std::size_t>(h ^ (h >> 31));
-  }
-};
-
 // For collinear directions a -> b and c -> d (both non-zero): do they point the same way?
 // Decided by comparisons along an axis on which a and b differ: nothing is computed.
 bool sameDirection(Point a, Point b, Point c, Point d) {

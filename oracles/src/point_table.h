@@ -32,6 +32,22 @@ class PointTable {
 
   std::size_t size() const { return size_; }
 
+  // The slot index is the hash's low bits, and a double with a short significand (a small
+  // integer, a dyadic fraction) has all its low bits zero: each coordinate goes through a full
+  // avalanche (splitmix64's finalizer) first. A multiply-and-shift left the points of a 9 x 9
+  // integer grid in 9 of 256 slots.
+  static std::uint64_t hash(Point p) {
+    auto mix = [](std::uint64_t h) {
+      h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+      h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+      return h ^ (h >> 31);
+    };
+    const double x = p.x + 0.0, y = p.y + 0.0;  // + 0.0: -0 and 0 are one key
+    std::uint64_t bx, by;
+    std::memcpy(&bx, &x, sizeof bx), std::memcpy(&by, &y, sizeof by);
+    return mix(mix(bx) + by);
+  }
+
  private:
   struct Slot {
     Point key{kNaN, kNaN};
@@ -40,16 +56,7 @@ class PointTable {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   static bool empty(const Slot& s) { return s.key.x != s.key.x; }
 
-  std::size_t home(Point p) const {
-    std::uint64_t h = 0;
-    for (double v : {p.x + 0.0, p.y + 0.0}) {  // + 0.0: -0 and 0 are one key
-      std::uint64_t bits;
-      std::memcpy(&bits, &v, sizeof bits);
-      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
-      h ^= h >> 29;
-    }
-    return static_cast<std::size_t>(h) & mask_;
-  }
+  std::size_t home(Point p) const { return static_cast<std::size_t>(hash(p)) & mask_; }
 
   void grow() {
     std::vector<Slot> old = std::move(slots_);

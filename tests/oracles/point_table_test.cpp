@@ -6,6 +6,7 @@
 #include <map>
 #include <random>
 
+#include "common/hash_spread.h"
 #include "point_table.h"
 
 namespace gh::oracle {
@@ -40,6 +41,16 @@ TEST(PointTable, MinusZeroIsZero) {
   auto [value, fresh] = table.findOrAdd({-0.0, 0.0});
   EXPECT_FALSE(fresh);
   EXPECT_EQ(value, 5);
+}
+
+// Slots are the hash's low bits, which a multiply-and-shift left alike for grid points: 9 of
+// 256 slots held the 9 x 9 integer grid.
+TEST(PointTable, HashSpreadsGridPointsOverTheSlots) {
+  for (const auto& points : test::gridPointSets()) {
+    for (std::uint64_t slots : {256u, 4096u}) {
+      EXPECT_GT(test::spreadOverSlots(points, slots, PointTable<int>::hash), 0.9) << points.size() << " points, " << slots << " slots";
+    }
+  }
 }
 
 }  // namespace
