@@ -82,18 +82,18 @@ class EvenOddRegion {
       for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) ++start_[k + 1];
     }
     for (std::size_t k = 0; k < bands_; ++k) start_[k + 1] += start_[k];
-    members_.resize(start_[bands_]);
+    // Each band holds copies of its edges (a ray test reads them in order, not scattered).
+    banded_.resize(start_[bands_]);
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (std::uint32_t i = 0; i < edges_.size(); ++i) {
-      const Edge& e = edges_[i];
-      for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) members_[fill[k]++] = i;
+    for (const Edge& e : edges_) {
+      for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) banded_[fill[k]++] = e;
     }
     // Each band from the rightmost edge leftwards: a ray test stops at the first edge that lies
     // wholly left of its point, as every edge after it does (none of them can count).
-    auto right = [&](std::uint32_t i) { return std::max(edges_[i].a.x, edges_[i].b.x); };
+    auto right = [](const Edge& e) { return std::max(e.a.x, e.b.x); };
     for (std::size_t k = 0; k < bands_; ++k) {
-      std::sort(members_.begin() + start_[k], members_.begin() + start_[k + 1],
-                [&](std::uint32_t i, std::uint32_t j) { return right(i) > right(j); });
+      std::sort(banded_.begin() + start_[k], banded_.begin() + start_[k + 1],
+                [&](const Edge& e, const Edge& f) { return right(e) > right(f); });
     }
   }
 
@@ -104,8 +104,8 @@ class EvenOddRegion {
     bool in = false;
     const std::size_t k = band(p.y);
     for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
-      const Point& a = edges_[members_[m]].a;
-      const Point& b = edges_[members_[m]].b;
+      const Point& a = banded_[m].a;
+      const Point& b = banded_[m].b;
       if (p.x > std::max(a.x, b.x)) break;  // this edge and all after it lie left of p
       if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
       const bool crosses = (a.y > p.y) != (b.y > p.y);
@@ -133,7 +133,7 @@ class EvenOddRegion {
   double minY_ = 0, maxY_ = 0;
   std::size_t bands_ = 1;
   std::vector<std::size_t> start_;
-  std::vector<std::uint32_t> members_;
+  std::vector<Edge> banded_;
 };
 
 // The edges of S and C, with what a point near one needs to know: how far from it a correct
@@ -211,6 +211,12 @@ class OperandEdges {
   double largestCoarseDelta() const { return largestCoarse_; }
 
  private:
+  struct Box {
+    double x0, x1, y0, y1;
+  };
+  struct Member : Box {
+    std::uint32_t edge;
+  };
   struct Edge {
     Point a, b;
     double coarse;   // the delta of its own magnitude: a bound on its delta
@@ -225,11 +231,9 @@ class OperandEdges {
     if (edges_.empty()) return false;
     const std::size_t k = cell(p.x, p.y);
     for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
-      Edge& e = edges_[members_[m]];
-      if (p.x < std::min(e.a.x, e.b.x) - e.coarse || p.x > std::max(e.a.x, e.b.x) + e.coarse ||
-          p.y < std::min(e.a.y, e.b.y) - e.coarse || p.y > std::max(e.a.y, e.b.y) + e.coarse) {
-        continue;
-      }
+      const Member& box = members_[m];
+      if (p.x < box.x0 || p.x > box.x1 || p.y < box.y0 || p.y > box.y1) continue;
+      Edge& e = edges_[box.edge];
       settle(e);
       if (test(static_cast<const Edge&>(e))) return true;
     }
@@ -278,9 +282,6 @@ class OperandEdges {
   std::size_t cell(double x, double y) const { return axis(y, y0_, y1_) * side_ + axis(x, x0_, x1_); }
   void index() {
     if (edges_.empty()) return;
-    struct Box {
-      double x0, x1, y0, y1;
-    };
     std::vector<Box> boxes;
     x0_ = y0_ = std::numeric_limits<double>::infinity(), x1_ = y1_ = -x0_;
     for (const Edge& e : edges_) {
@@ -308,7 +309,7 @@ class OperandEdges {
     for (std::size_t k = 0; k + 1 < start_.size(); ++k) start_[k + 1] += start_[k];
     members_.resize(start_.back());
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (std::uint32_t i = 0; i < boxes.size(); ++i) forCells(boxes[i], [&](std::size_t k) { members_[fill[k]++] = i; });
+    for (std::uint32_t i = 0; i < boxes.size(); ++i) forCells(boxes[i], [&](std::size_t k) { members_[fill[k]++] = {boxes[i], i}; });
   }
 
   int ulps_;
@@ -319,7 +320,7 @@ class OperandEdges {
   double x0_ = 0, x1_ = 0, y0_ = 0, y1_ = 0;
   std::size_t side_ = 1;
   std::vector<std::size_t> start_;
-  std::vector<std::uint32_t> members_;
+  std::vector<Member> members_;  // each cell's edges, with their widened boxes (read in order)
 };
 
 // The phase of the eight directions around a vertex: a function of the vertex and the seed
@@ -375,17 +376,15 @@ class SegmentGrid {
     if (segments_.empty()) return least;
     forCells(q.x - cap, q.x + cap, q.y - cap, q.y + cap, [&](std::size_t k) {
       for (std::size_t m = start_[k]; m < start_[k + 1] && least > 0; ++m) {
-        const auto& s = segments_[members_[m]];
+        const Member& box = members_[m];
         // A box farther than `least` from q holds nothing nearer, and no segment through q.
-        if (std::min(s.first.x, s.second.x) - q.x > least || q.x - std::max(s.first.x, s.second.x) > least ||
-            std::min(s.first.y, s.second.y) - q.y > least || q.y - std::max(s.first.y, s.second.y) > least) {
-          continue;
-        }
+        if (box.x0 - q.x > least || q.x - box.x1 > least || box.y0 - q.y > least || q.y - box.y1 > least) continue;
+        const auto& s = segments_[box.segment];
         const Distance d = distance(q, s);
-        const bool through = d.interior && d.line < least && passesNear(members_[m], d.line);
+        const bool through = d.interior && d.line < least && passesNear(box.segment, d.line);
         least = std::min(least, through ? endDistance(q, s) : d.line);
         strictLeast = std::min(strictLeast, d.line);
-        if (atQ && d.atQ) atQ->push_back(members_[m]);
+        if (atQ && d.atQ) atQ->push_back(box.segment);
       }
     });
     if (strict) *strict = strictLeast;  // never more than least: d.line <= endDistance
@@ -447,7 +446,8 @@ class SegmentGrid {
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
     for (std::uint32_t i = 0; i < segments_.size(); ++i) {
       const auto& [a, b] = segments_[i];
-      forCells(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), [&](std::size_t k) { members_[fill[k]++] = i; });
+      const Member box{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), i};
+      forCells(box.x0, box.x1, box.y0, box.y1, [&](std::size_t k) { members_[fill[k]++] = box; });
     }
   }
   std::size_t axis(double v, double lo, double hi) const { return bucket(v, lo, hi, side_); }
@@ -465,7 +465,11 @@ class SegmentGrid {
   double x0_ = 0, x1_ = 0, y0_ = 0, y1_ = 0;
   std::size_t side_ = 1;
   std::vector<std::size_t> start_;
-  std::vector<std::uint32_t> members_;
+  struct Member {  // a segment listed in a cell, with its box (the cells are read in order)
+    double x0, x1, y0, y1;
+    std::uint32_t segment;
+  };
+  std::vector<Member> members_;
 };
 
 // An answer's boundary near a point q, within a radius where it consists of rays from q (its
