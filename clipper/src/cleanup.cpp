@@ -247,9 +247,9 @@ Region CleanUp::dissolveSeams(const Region& region) const {
     for (std::uint32_t e = 0; e < op.size(); ++e) add(fromNumber[e], e), add(toNumber[e], e);
   });
   // Cut every edge e at each point x strictly inside it that is an endpoint of an edge f collinear
-  // with e (a collinear overlap, split at the other's endpoints).
-  // A point collinear with an edge lies strictly inside it iff it is in the edge's closed box and
-  // is neither end: the boxes, in one array, screen the edges of x's cell without a branch each.
+  // with e (a collinear overlap, split at the other's endpoints). A point collinear with e lies
+  // strictly inside it iff it is in e's closed box and is neither end: the boxes, in one array,
+  // screen the edges of x's cell before any orientation is decided.
   struct Box {
     double x0, x1, y0, y1;
   };

@@ -63,29 +63,30 @@ std::size_t bucket(double v, double lo, double hi, std::size_t n) {
 class EvenOddRegion {
  public:
   explicit EvenOddRegion(const Region& region) {
+    std::vector<Edge> edges;
     for (const Ring& ring : region) {
-      for (std::size_t i = 0, n = ring.size(); i < n; ++i) edges_.push_back({ring[i], ring[(i + 1) % n]});
+      for (std::size_t i = 0, n = ring.size(); i < n; ++i) edges.push_back({ring[i], ring[(i + 1) % n]});
     }
-    if (edges_.empty()) return;
-    minY_ = maxY_ = edges_[0].a.y;
-    for (const Edge& e : edges_) {
+    if (edges.empty()) return;
+    minY_ = maxY_ = edges[0].a.y;
+    for (const Edge& e : edges) {
       minY_ = std::min({minY_, e.a.y, e.b.y}), maxY_ = std::max({maxY_, e.a.y, e.b.y});
     }
     // Bands: about one per 4 edges, fewer while long edges would be copied into too many.
-    for (bands_ = std::clamp<std::size_t>(edges_.size() / 4, 1, 4096);; bands_ /= 2) {
+    for (bands_ = std::clamp<std::size_t>(edges.size() / 4, 1, 4096);; bands_ /= 2) {
       std::size_t copies = 0;
-      for (const Edge& e : edges_) copies += band(std::max(e.a.y, e.b.y)) - band(std::min(e.a.y, e.b.y)) + 1;
-      if (copies <= 16 * edges_.size() || bands_ == 1) break;
+      for (const Edge& e : edges) copies += band(std::max(e.a.y, e.b.y)) - band(std::min(e.a.y, e.b.y)) + 1;
+      if (copies <= 16 * edges.size() || bands_ == 1) break;
     }
     start_.assign(bands_ + 1, 0);
-    for (const Edge& e : edges_) {
+    for (const Edge& e : edges) {
       for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) ++start_[k + 1];
     }
     for (std::size_t k = 0; k < bands_; ++k) start_[k + 1] += start_[k];
     // Each band holds copies of its edges (a ray test reads them in order, not scattered).
     banded_.resize(start_[bands_]);
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (const Edge& e : edges_) {
+    for (const Edge& e : edges) {
       for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) banded_[fill[k]++] = e;
     }
     // Each band from the rightmost edge leftwards: a ray test stops at the first edge that lies
@@ -100,7 +101,7 @@ class EvenOddRegion {
   // Even-odd parity of a rightward ray from p, exactly; nullopt when p lies on an edge (on the
   // boundary, inside and outside are a convention, not an answer).
   std::optional<bool> inside(Point p) const {
-    if (edges_.empty() || !(p.y >= minY_ && p.y <= maxY_)) return false;
+    if (banded_.empty() || !(p.y >= minY_ && p.y <= maxY_)) return false;
     bool in = false;
     const std::size_t k = band(p.y);
     for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
@@ -129,7 +130,6 @@ class EvenOddRegion {
     Point a, b;
   };
   std::size_t band(double y) const { return bucket(y, minY_, maxY_, bands_); }
-  std::vector<Edge> edges_;
   double minY_ = 0, maxY_ = 0;
   std::size_t bands_ = 1;
   std::vector<std::size_t> start_;
