@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 #include <tuple>
+#include <unordered_map>
 
 #include "ghclip/region.h"
 #include "ghio/formats.h"
@@ -131,6 +132,7 @@ int run(int argc, char** argv) {
   using Key = std::tuple<std::string, std::string, std::string, std::string, std::string>;
   std::map<Key, std::set<std::string>> groups;  // -> distinct inputs
   std::map<Key, std::size_t> counts;
+  std::unordered_map<std::string, std::pair<std::string, std::string>> kinds;  // operands -> degeneracy, coordinates
   for (const std::string& file : files) {
     std::ifstream in(file);
     if (!in) throw tools::BadInput(file + ": cannot read");
@@ -140,8 +142,14 @@ int run(int argc, char** argv) {
       std::istringstream fields(line);
       for (std::string x; std::getline(fields, x, '\t');) f.push_back(x);
       if (f.size() != 6) throw tools::BadInput(file + ": not a findings line (6 tab-separated fields)");
-      const Region s = io::readWkt(f[3]), c = io::readWkt(f[4]);
-      const Key key{f[0], cause(f[1]), f[2], degeneracy(s, c), coordinates(s, c)};
+      // One input's operands come with each operation it failed: classified once (the exact
+      // degeneracy test is quadratic in the edges, and a campaign records 10^5 findings).
+      auto [kind, fresh] = kinds.try_emplace(f[3] + '\t' + f[4]);
+      if (fresh) {
+        const Region s = io::readWkt(f[3]), c = io::readWkt(f[4]);
+        kind->second = {degeneracy(s, c), coordinates(s, c)};
+      }
+      const Key key{f[0], cause(f[1]), f[2], kind->second.first, kind->second.second};
       groups[key].insert(f[5]);
       ++counts[key];
     }
