@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ghclip/region.h"
+#include "mix_bits.h"
 
 namespace gh::oracle {
 
@@ -37,15 +38,10 @@ class PointTable {
   // avalanche (splitmix64's finalizer) first. A multiply-and-shift left the points of a 9 x 9
   // integer grid in 9 of 256 slots.
   static std::uint64_t hash(Point p) {
-    auto mix = [](std::uint64_t h) {
-      h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-      h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-      return h ^ (h >> 31);
-    };
     const double x = p.x + 0.0, y = p.y + 0.0;  // + 0.0: -0 and 0 are one key
     std::uint64_t bx, by;
     std::memcpy(&bx, &x, sizeof bx), std::memcpy(&by, &y, sizeof by);
-    return mix(mix(bx) + by);
+    return mixBits(mixBits(bx) + by);
   }
 
  private:

@@ -13,6 +13,7 @@
 
 #include "exact_orientation.h"
 #include "judging_scale.h"
+#include "mix_bits.h"
 #include "point_table.h"
 #include "ulp.h"
 
@@ -331,10 +332,7 @@ double phaseOf(Point q, std::uint64_t seed) {
   for (double v : {q.x + 0.0, q.y + 0.0}) {  // + 0.0: -0 and 0 are one vertex
     std::uint64_t bits;
     std::memcpy(&bits, &v, sizeof bits);
-    h += bits + 0x9E3779B97F4A7C15ull;
-    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-    h ^= h >> 31;
+    h = mixBits(h + bits + 0x9E3779B97F4A7C15ull);
   }
   return static_cast<double>(h >> 11) * 0x1p-53 * 2 * std::acos(-1.0);
 }

@@ -13,8 +13,8 @@
 
 namespace gh::test {
 
-// Grid points: the 9 x 9 integer grid of the fuzz targets' mode 0, a 64 x 64 grid of
-// integers up to 2^10 times 0.5 (halves and integers), and the same moved by 2^-20.
+// Grid points: the 9 x 9 integer grid of the fuzz targets' mode 0, a 64 x 64 grid of multiples
+// of 8 and of -4 (coarser, negative coordinates too), and a 64 x 64 integer grid moved by 2^-20.
 inline std::vector<std::vector<Point>> gridPointSets() {
   std::vector<Point> small, halves, moved;
   for (int i = 0; i <= 8; ++i) for (int j = 0; j <= 8; ++j) small.push_back({double(i), double(j)});
