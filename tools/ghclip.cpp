@@ -144,6 +144,9 @@ int run(int argc, char** argv) {
       result = gh::clip(subject, clip, *op, options, &stats);
     }
   } catch (const gh::InvalidInput& e) {
+    // Name the file the refused operand came from; a peer's refusal may concern either.
+    if (e.operand() == "subject") throw gh::tools::BadInput(subjectPath + ": " + e.problem());
+    if (e.operand() == "clip") throw gh::tools::BadInput(clipPath + ": " + e.problem());
     throw gh::tools::BadInput(subjectPath + " / " + clipPath + ": " + e.what());
   }
 

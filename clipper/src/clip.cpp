@@ -83,9 +83,17 @@ Region clipWith(Operand s, Operand c, Op op, const Options& options, Stats& stat
 
 Region clip(const Region& subject, const Region& clip, Op op, const Options& options, Stats* stats) {
   Stats local;
-  // Validation copies the input once, straight into phase 1's flat arrays.
-  Operand s(subject, options.sanitize);
-  Operand c(clip, options.sanitize);
+  // Validation copies the input once, straight into phase 1's flat arrays; a refusal names the
+  // operand it concerns.
+  auto validated = [&](const Region& region, const char* operand) {
+    try {
+      return Operand(region, options.sanitize);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(operand, e.what());
+    }
+  };
+  Operand s = validated(subject, "subject");
+  Operand c = validated(clip, "clip");
   local.subjectVertices = s.size();
   local.clipVertices = c.size();
   Region result = options.arithmetic == Arithmetic::Exact

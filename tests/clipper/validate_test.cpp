@@ -30,6 +30,21 @@ TEST(BadInput, NaNIsRefused) {
   EXPECT_NE(messageOf({rect(0, 0, 1, 1)}, s).find("ring 1, vertex 3"), std::string::npos);
 }
 
+// The refusal says which operand: a tool names that operand's file.
+TEST(BadInput, TheRefusedOperandIsNamed) {
+  const Region bad{rect(0, 0, 1, 1), {{0, 0}, {1, 1}}};
+  for (const bool subjectIsBad : {true, false}) {
+    try {
+      clip(subjectIsBad ? bad : Region{rect(0, 0, 1, 1)}, subjectIsBad ? Region{rect(0, 0, 1, 1)} : bad, Op::Union);
+      ADD_FAILURE() << "not refused";
+    } catch (const InvalidInput& e) {
+      EXPECT_EQ(e.operand(), subjectIsBad ? "subject" : "clip");
+      EXPECT_EQ(e.problem(), "ring 2 has fewer than 3 distinct vertices");
+      EXPECT_EQ(std::string(e.what()), e.operand() + ": " + e.problem());
+    }
+  }
+}
+
 TEST(BadInput, InfinityIsRefused) {
   Region s{{{0, 0}, {std::numeric_limits<double>::infinity(), 0}, {0, 1}}};
   EXPECT_NE(messageOf(s, {rect(0, 0, 1, 1)}).find("not finite"), std::string::npos);

@@ -24,6 +24,7 @@ bad() {  # bad NAME SUBJECT_TEXT
   check "$name: exit 2 (got $code)" test "$code" -eq 2
   check "$name: one stderr line" test "$(wc -l <"$TMP/$name.err")" -eq 1
   check "$name: message names the file" grep -q "$name.wkt" "$TMP/$name.err"
+  check "$name: and not the valid operand's" test -z "$(grep half_square "$TMP/$name.err")"
   check "$name: no output file" test ! -e "$TMP/$name.out"
   check "$name: no svg file" test ! -e "$TMP/$name.svg"
   check "$name: no temporary file" test -z "$(ls "$TMP" | grep tmp)"
@@ -34,6 +35,12 @@ bad twovertex 'POLYGON((0 0, 1 1, 0 0))'
 bad notapolygon 'LINESTRING(0 0, 1 1)'
 bad huge 'POLYGON((0 0, 1e300 0, 0 1, 0 0))'
 bad badjson '{"type": "Polygon", "coordinates": [[[0, 0], [1]]]}'
+# The same refusals of the clip operand name the clip's file.
+for name in nan twovertex huge; do
+  "$BIN/ghclip" --op union "$EX/half_square.wkt" "$TMP/$name.wkt" 2>"$TMP/$name-as-clip.err" >/dev/null
+  check "$name as clip: exit 2" test $? -eq 2
+  check "$name as clip: names its file only" test "$(grep -c "^ghclip: $TMP/$name.wkt: ring 1" "$TMP/$name-as-clip.err")" -eq 1
+done
 
 "$BIN/ghclip" --op intersection "$TMP/missing.wkt" "$EX/half_square.wkt" 2>"$TMP/missing.err"
 check "missing file: exit 2" test $? -eq 2
