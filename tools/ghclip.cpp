@@ -23,9 +23,10 @@ namespace {
 
 constexpr const char* kDescription =
     "Clip two polygonal regions with the Greiner-Hormann algorithm.\n"
-    "Input: WKT POLYGON/MULTIPOLYGON or GeoJSON (Polygon, MultiPolygon, Feature...), '-' for\n"
-    "stdin. All rings of an input are pooled and its interior is the even-odd rule over all of\n"
-    "them: holes are rings inside rings, and OGC shell/hole roles are ignored.\n"
+    "Input: WKT POLYGON/MULTIPOLYGON (also in a GEOMETRYCOLLECTION, after PostGIS's SRID=n;) or\n"
+    "GeoJSON (Polygon, MultiPolygon, Feature...), '-' for stdin. All rings of an input are\n"
+    "pooled and its interior is the even-odd rule over all of them: holes are rings inside\n"
+    "rings, and OGC shell/hole roles are ignored.\n"
     "Output: a MULTIPOLYGON (GeoJSON MultiPolygon) of polygons with holes that GEOS calls valid\n"
     "(--layout ogc, the default), or of one polygon per raw ring (--layout rings).\n"
     "Arithmetic: exact by default (exact predicates, Simulation of Simplicity: no input vertex\n"

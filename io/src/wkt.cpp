@@ -1,5 +1,5 @@
-// WKT POLYGON and MULTIPOLYGON: read and written with std::from_chars / std::to_chars (shortest
-// round-trip form). Boost.Geometry's reader, used before, took 3x GEOS's time and read
+// WKT POLYGON and MULTIPOLYGON (read also inside a GEOMETRYCOLLECTION, and after PostGIS's
+// "SRID=n;"): read and written with std::from_chars / std::to_chars (shortest round-trip form). Boost.Geometry's reader, used before, took 3x GEOS's time and read
 // "POLYGON((0 0 1, ...))" as twice as many XY points; this one knows Z, M and ZM.
 #include <cctype>
 #include <algorithm>
@@ -19,9 +19,42 @@ class WktReader {
   explicit WktReader(std::string_view text) : s_(text) {}
 
   Region read() {
+    srid();
+    Region out;
+    geometry(out, 0);
+    skipBlanks();
+    if (i_ != s_.size()) fail("unexpected text after the geometry");
+    return out;
+  }
+
+ private:
+  // Collections nest at most this deep: deeper text is refused, not followed down the stack.
+  static constexpr int kMaxDepth = 64;
+
+  // PostGIS's extended WKT starts "SRID=4326;": the reference system is not ours to use.
+  void srid() {
+    const std::size_t mark = i_;
+    if (word() != "SRID" || !accept('=')) {
+      i_ = mark;
+      return;
+    }
+    skipBlanks();
+    const std::size_t digits = i_;
+    while (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || (i_ == digits && s_[i_] == '-'))) ++i_;
+    if (i_ == digits) fail("expected the SRID's number");
+    expect(';');
+  }
+
+  // A POLYGON, a MULTIPOLYGON, or a GEOMETRYCOLLECTION of them (PostGIS's ST_Collect writes
+  // those), each with its own Z, M or ZM tag; all their rings pooled into out.
+  void geometry(Region& out, int depth) {
     const std::string keyword = word();
-    if (keyword != "POLYGON" && keyword != "MULTIPOLYGON") {
-      fail(keyword.empty() ? "expected POLYGON or MULTIPOLYGON" : "expected POLYGON or MULTIPOLYGON, found '" + keyword.substr(0, 40) + "'");
+    if (keyword != "POLYGON" && keyword != "MULTIPOLYGON" && keyword != "GEOMETRYCOLLECTION") {
+      const char* expected = depth ? "expected POLYGON or MULTIPOLYGON in the collection" : "expected POLYGON or MULTIPOLYGON";
+      fail(keyword.empty() ? expected : std::string(expected) + ", found '" + keyword.substr(0, 40) + "'");
+    }
+    if (keyword == "GEOMETRYCOLLECTION" && depth == kMaxDepth) {
+      fail("collections nested more than " + std::to_string(kMaxDepth) + " deep");
     }
     dimensions_ = 2;
     std::size_t mark = i_;
@@ -34,24 +67,23 @@ class WktReader {
       i_ = mark;  // not a tag: EMPTY or '('
     }
     tagged_ = dimensions_ != 2;
-    Region out;
-    if (!empty()) {
-      if (keyword == "POLYGON") {
-        polygon(out);
-      } else {
-        expect('(');
-        do {
-          if (!empty()) polygon(out);
-        } while (accept(','));
-        expect(')');
-      }
+    if (empty()) return;
+    if (keyword == "POLYGON") {
+      polygon(out);
+    } else if (keyword == "MULTIPOLYGON") {
+      expect('(');
+      do {
+        if (!empty()) polygon(out);
+      } while (accept(','));
+      expect(')');
+    } else {
+      expect('(');
+      do geometry(out, depth + 1);
+      while (accept(','));
+      expect(')');
     }
-    skipBlanks();
-    if (i_ != s_.size()) fail("unexpected text after the geometry");
-    return out;
   }
 
- private:
   [[noreturn]] void fail(const std::string& what) const {
     throw InvalidInput("WKT: " + what + " (at character " + std::to_string(i_ + 1) + ")");
   }

@@ -50,6 +50,36 @@ TEST(Wkt, EmptyAndMalformedInput) {
   EXPECT_THROW(io::readWkt(""), InvalidInput);
 }
 
+// What PostGIS writes: ST_Collect's GEOMETRYCOLLECTION of polygons (nested, with EMPTY members
+// and their own Z tags), after EWKT's "SRID=n;". Every ring is pooled as in a MULTIPOLYGON.
+TEST(Wkt, CollectionsOfPolygonsAndSridPrefix) {
+  const Region r = io::readWkt(
+      "SRID=4326;GEOMETRYCOLLECTION(POLYGON((0 0,4 0,4 4,0 4,0 0)),POLYGON EMPTY,"
+      "GEOMETRYCOLLECTION Z(MULTIPOLYGON Z(((1 1 9,3 1 9,3 3 9,1 3 9,1 1 9)))),GEOMETRYCOLLECTION EMPTY)");
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_NEAR(evenOddArea(r), 12, 1e-12);
+  EXPECT_EQ(r[1][2], (Point{3, 3}));
+  EXPECT_TRUE(io::readWkt("GEOMETRYCOLLECTION EMPTY").empty());
+  EXPECT_EQ(io::readWkt("srid=-1 ; polygon((0 0,1 0,1 1,0 0))").size(), 1u);
+  // Anything else in a collection is refused, as a bare POINT is; so are a bad prefix and
+  // nesting deeper than the reader follows.
+  EXPECT_THROW(io::readWkt("GEOMETRYCOLLECTION(POLYGON((0 0,1 0,1 1,0 0)),POINT(1 2))"), InvalidInput);
+  EXPECT_THROW(io::readWkt("SRID=;POLYGON((0 0,1 0,1 1,0 0))"), InvalidInput);
+  EXPECT_THROW(io::readWkt("SRID=4326 POLYGON((0 0,1 0,1 1,0 0))"), InvalidInput);
+  std::string deep;
+  for (int i = 0; i < 100000; ++i) deep += "GEOMETRYCOLLECTION(";
+  try {
+    io::readWkt(deep);
+    ADD_FAILURE() << "deep nesting read";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("nested"), std::string::npos) << e.what();
+  }
+  std::string fine = "POLYGON((0 0,1 0,1 1,0 0))";
+  for (int i = 0; i < 64; ++i) fine = "GEOMETRYCOLLECTION(" + fine + ")";
+  EXPECT_EQ(io::readWkt(fine).size(), 1u);
+  EXPECT_THROW(io::readWkt("GEOMETRYCOLLECTION(" + fine + ")"), InvalidInput);
+}
+
 TEST(GeoJson, GeometriesFeaturesAndCollections) {
   const std::string square = "[[0,0],[2,0],[2,2],[0,2],[0,0]]";
   EXPECT_NEAR(evenOddArea(io::readGeoJson(R"({"type":"Polygon","coordinates":[)" + square + "]}")),
