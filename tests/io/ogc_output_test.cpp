@@ -12,6 +12,7 @@
 #include "ghclip/clip.h"
 #include "ghclip/measure.h"
 #include "ghio/formats.h"
+#include "ghoracle/exact_oracle.h"
 #include "ghwork/generators.h"
 
 namespace gh {
@@ -121,6 +122,54 @@ TEST(OgcOutput, EmptyAnswersAndHolesReadRight) {
     EXPECT_TRUE(read.valid);
     EXPECT_DOUBLE_EQ(read.area, evenOddArea(u));
     EXPECT_DOUBLE_EQ(read.area, 18);  // the frame's 16, the gate's part below it and in the hole
+  }
+}
+
+// Regression (real data, Natural Earth's country outlines): valid polygons against copies moved by
+// one ulp or 1e-9 make answers of slivers a few ulps wide whose rings cross. GEOS's floating
+// noder failed to converge on one ("Iterated noding failed"), and the noded faces' area missed the
+// answer's by more than 1e-9 of it on the others, so ghclip refused to write them (exit 2) though
+// both inputs were valid and the answer right. The OGC layout of each must be written, valid, and
+// right up to the rounding of the nodes (the exact oracle, 2 ulps: README).
+TEST(OgcOutput, SliversOfShiftedCopiesAreWrittenValid) {
+  struct Case {
+    const char* name;
+    Region a, b;
+    Op op;
+  };
+  const std::vector<Case> cases{
+      {"Lesotho's corner xor its 1-ulp shift",
+       {{{28.107205, -30.545732}, {27.749397, -30.645106}, {28.074338, -28.851469}}},
+       {{{28.107205000000004, -30.545732}, {27.749397000000002, -30.645106}, {28.074338000000004, -28.851469}}},
+       Op::Xor},
+      {"a corner of the USA xor its 1-ulp shift (GEOS's noder did not converge)",
+       {{{-72.295, 41.27}, {-72.87643, 41.22065}, {-73.71, 40.931102}}},
+       {{{-72.29499999999999, 41.27}, {-72.87642999999998, 41.22065}, {-73.70999999999998, 40.931102}}},
+       Op::Xor},
+      {"Canada's border on y = 49 minus its 1e-9 shift",
+       {{{-104.04826, 48.99986}, {-110.05, 49}, {-113, 49}, {-116.04818, 49}, {-91.51964, 70.19129}}},
+       {{{-104.048259999, 48.99986}, {-110.049999999, 49}, {-112.999999999, 49}, {-116.048179999, 49},
+         {-91.51963999899999, 70.19129}}},
+       Op::Difference},
+  };
+  GeosReader geos;
+  oracle::ExactOptions twoUlps;
+  twoUlps.constructionUlps = 2;
+  for (const Case& c : cases) {
+    for (const Op op : {c.op, Op::Xor, Op::Difference, Op::ReverseDifference}) {
+      const Region r = clip(c.a, c.b, op);
+      ASSERT_TRUE(oracle::exactCheck(c.a, c.b, op, r).pass) << c.name;
+      for (io::Format format : {io::Format::Wkt, io::Format::GeoJson}) {
+        const std::string where = std::string(c.name) + ", " + std::string(name(op)) + (format == io::Format::Wkt ? ", wkt" : ", geojson");
+        std::string text;
+        ASSERT_NO_THROW(text = io::write(r, format, io::Layout::Ogc)) << where;
+        const auto read = geos.read(text, format);
+        ASSERT_TRUE(read.parsed) << where;
+        EXPECT_TRUE(read.valid) << where;
+        const auto verdict = oracle::exactCheck(c.a, c.b, op, read.rings, twoUlps);
+        EXPECT_TRUE(verdict.pass) << where << ": GEOS reads area " << read.area << ", the answer's is " << evenOddArea(r);
+      }
+    }
   }
 }
 

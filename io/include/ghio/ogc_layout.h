@@ -2,11 +2,14 @@
 //
 // Where the region's rings are simple and pairwise disjoint, the nesting is exact
 // (gh::toPolygonsWithHoles). Where rings cross or touch (self-intersecting input, rings meeting
-// at a vertex), the rings are noded and the even-odd faces built by GEOS (MakeValid, linework
-// method: the faces of the noded rings, alternately in and out, i.e. the even-odd rule); new
-// nodes are rounded to doubles by GEOS. The result is checked: valid by GEOSisValid and of the
-// region's even-odd area (to the rounding of the added nodes); otherwise WriteError says why,
-// rather than writing something invalid ("--layout rings" writes the raw rings).
+// at a vertex), GEOS nodes the rings' linework and polygonizes it, the faces whose inside point
+// is inside the region by the even-odd rule (decided exactly) are kept and merged; new nodes are
+// rounded to doubles. Where that floating noding fails (slivers an ulp wide), the linework is
+// snap-rounded instead (OverlayNG, fixed precision: valid by construction) to the finest
+// power-of-two grid, from the largest coordinate's ulp up, that gives a valid result. The result
+// is checked: valid by GEOSisValid, and of the region's even-odd area to within the boundary's
+// length times twice the rounding (an ulp, or the grid); otherwise WriteError says why, rather
+// than writing something invalid ("--layout rings" writes the raw rings).
 // Shells counter-clockwise, holes clockwise (RFC 7946).
 #pragma once
 
