@@ -320,11 +320,42 @@ Region CleanUp::dissolveSeams(const Region& region) const {
     }
     if (forward > 0) --forward, kept.push_back(i);
   }
+  // Under the even-odd rule two copies of a piece in the same direction cancel as well (crossing
+  // both changes nothing): a loop traced twice, as borders shared with T-junctions leave in
+  // S \ S. The pieces kept between two points all run one way (opposite ones cancelled above);
+  // where two or more remain, their count modulo 2 is kept, and the pieces are chained without
+  // regard to direction: every point still ends an even number of pieces, so every walk closes.
+  bool directed = true;
+  {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> byPair(kept.size());
+    for (std::uint32_t j = 0; j < kept.size(); ++j) {
+      const std::uint32_t u = pieceFrom[kept[j]], v = pieceTo[kept[j]];
+      byPair[j] = {key(std::min(u, v), std::max(u, v)), j};
+    }
+    std::sort(byPair.begin(), byPair.end());
+    std::vector<char> dropped(kept.size(), 0);
+    for (std::size_t a = 0, b; a < byPair.size(); a = b) {
+      for (b = a + 1; b < byPair.size() && byPair[b].first == byPair[a].first; ++b) {
+      }
+      // Drop all but (b - a) mod 2 of the run, keeping its first in order of the pieces.
+      for (std::size_t k = a + (b - a) % 2; k < b; ++k) dropped[byPair[k].second] = 1, directed = false;
+    }
+    if (!directed) {
+      std::vector<std::uint32_t> left;
+      for (std::uint32_t j = 0; j < kept.size(); ++j) {
+        if (!dropped[j]) left.push_back(kept[j]);
+      }
+      kept.swap(left);
+    }
+  }
   // Chain the remaining pieces; at a vertex with several ways on, take the sharpest right turn,
   // decided exactly. Any choice bounds the same even-odd interior; this one is deterministic
   // (counter-clockwise rings touching at a vertex become one ring through it).
-  const Rows outgoing(ends.size(), [&](auto&& add) {
-    for (std::uint32_t j = 0; j < kept.size(); ++j) add(pieceFrom[kept[j]], j);
+  const Rows around(ends.size(), [&](auto&& add) {
+    for (std::uint32_t j = 0; j < kept.size(); ++j) {
+      add(pieceFrom[kept[j]], j);
+      if (!directed) add(pieceTo[kept[j]], j);
+    }
   });
   std::vector<char> used(kept.size(), 0);
   Region out;
@@ -332,18 +363,24 @@ Region CleanUp::dissolveSeams(const Region& region) const {
     if (used[start]) continue;
     Ring ring;
     std::size_t cur = start;
+    bool reversed = false;  // the current piece is walked from its end to its start
     for (std::size_t guard = 0; guard <= kept.size(); ++guard) {
       used[cur] = 1;
-      const auto& [from, at] = pieces[kept[cur]];
+      const auto& piece = pieces[kept[cur]];
+      const Point from = reversed ? piece.second : piece.first, at = reversed ? piece.first : piece.second;
       ring.push_back(from);
-      const std::uint32_t atNumber = pieceTo[kept[cur]];
+      const std::uint32_t atNumber = reversed ? pieceFrom[kept[cur]] : pieceTo[kept[cur]];
       std::size_t best = kept.size();
-      for (const std::uint32_t* j = outgoing.begin(atNumber); j != outgoing.end(atNumber); ++j) {
+      bool bestReversed = false;
+      Point bestFar;
+      for (const std::uint32_t* j = around.begin(atNumber); j != around.end(atNumber); ++j) {
         if (used[*j]) continue;
-        if (best == kept.size() || sharperRight(from, at, pieces[kept[*j]].second, pieces[kept[best]].second)) best = *j;
+        const bool backwards = pieceFrom[kept[*j]] != atNumber;  // only when undirected
+        const Point far = backwards ? pieces[kept[*j]].first : pieces[kept[*j]].second;
+        if (best == kept.size() || sharperRight(from, at, far, bestFar)) best = *j, bestReversed = backwards, bestFar = far;
       }
       if (best == kept.size()) break;  // back at the start (its piece is used)
-      cur = best;
+      cur = best, reversed = bestReversed;
     }
     out.push_back(std::move(ring));
   }

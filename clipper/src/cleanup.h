@@ -15,7 +15,7 @@ namespace gh::detail {
 // all decided exactly, fallbacks to rational arithmetic counted in `counters`. With dissolveSeams
 // (for an arithmetic whose answers are a limit that leaves zero-width parts:
 // Arithmetic::kLeavesZeroWidthParts), zero-width seams between rings that share a vertex are
-// dissolved too.
+// dissolved too: coincident pieces cancel in pairs, opposite or (even-odd) the same way.
 // `rings` is trimmed in place on the way.
 Region cleanedUp(FlatRings& rings, bool dissolveSeams, ExactCounters& counters);
 Region cleanedUp(const Region& region, bool dissolveSeams, ExactCounters& counters);

@@ -10,6 +10,7 @@
 #include "cleanup.h"
 #include "common/hash_spread.h"
 #include "point_hash.h"
+#include "ghclip/clip.h"
 #include "ghclip/measure.h"
 #include "ghoracle/exact_oracle.h"
 #include "ghoracle/invariants.h"
@@ -120,6 +121,37 @@ TEST(CleanUp, ChainsSeamsByExactTurns) {
   ASSERT_EQ(r.size(), 1u);
   EXPECT_EQ(r[0], (Ring{u, o, b, v, o, a}));
   EXPECT_TRUE(sameInterior(touching, r));
+}
+
+// Under the even-odd rule two copies of a piece in the same direction cancel too. A loop traced
+// twice the same way bounds nothing, and chaining may then go against the pieces' direction.
+TEST(CleanUp, CancelsPiecesTracedTwiceTheSameWay) {
+  const Region twice{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  EXPECT_TRUE(clean(twice, true).empty());
+  // Three times is once; with a square touching it at a corner, the rest still chains closed.
+  const Region thrice{{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {1, 1}, {0, 1}},
+                      rect(1, 1, 2, 2)};
+  const Region r = clean(thrice, true);
+  EXPECT_DOUBLE_EQ(evenOddArea(r), 2);
+  EXPECT_TRUE(sameInterior(thrice, r));
+  EXPECT_EQ(vertexCount(r), 8u);
+}
+
+// Regression (real data: Natural Earth's Switzerland pooled with its four neighbours, whose
+// borders meet hers at T-junctions): S \ S, S xor S and S n S left loops traced twice the same
+// way (S \ S was one ring around Switzerland twice; S n S had the doubled loops besides the
+// outline). A tiling of [0,3]^2 by five rectangles with T-junctions does the same.
+TEST(CleanUp, IdentitiesOfATilingWithTJunctionsComeOutClean) {
+  const Region tiling{rect(0, 0, 1, 3), rect(2, 0, 3, 3), rect(1, 0, 2, 1), rect(1, 2, 2, 3),
+                      {{1, 1}, {2, 1}, {2, 2}, {1, 2}, {1, 1.5}}};
+  EXPECT_TRUE(clip(tiling, tiling, Op::Difference).empty());
+  EXPECT_TRUE(clip(tiling, tiling, Op::Xor).empty());
+  for (const Op op : {Op::Intersection, Op::Union}) {
+    const Region r = clip(tiling, tiling, op);
+    ASSERT_EQ(r.size(), 1u) << name(op);
+    EXPECT_DOUBLE_EQ(evenOddArea(r), 9) << name(op);
+    EXPECT_TRUE(oracle::exactCheck(tiling, tiling, op, r).pass) << name(op);
+  }
 }
 
 // Rings on a 7 x 7 grid (repeats, spikes, straight runs and collinear rings galore), cleaned with
