@@ -372,7 +372,7 @@ Region CleanUp::dissolveSeams(const Region& region) const {
       const std::uint32_t atNumber = reversed ? pieceFrom[kept[cur]] : pieceTo[kept[cur]];
       std::size_t best = kept.size();
       bool bestReversed = false;
-      Point bestFar;
+      Point bestFar{};
       for (const std::uint32_t* j = around.begin(atNumber); j != around.end(atNumber); ++j) {
         if (used[*j]) continue;
         const bool backwards = pieceFrom[kept[*j]] != atNumber;  // only when undirected
