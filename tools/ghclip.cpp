@@ -67,7 +67,7 @@ int run(int argc, char** argv) {
   app.add_flag("--stats", wantStats,
                "print statistics as JSON (stdout when -o names a file, else stderr)");
   app.add_option("--check", checkName,
-                 "judge the result with an oracle: exact | sample (exit 1 if it fails)");
+                 "judge the result as computed, before the OGC layout, with an oracle: exact | sample (exit 1 if it fails)");
   app.add_flag("--sanitize", sanitize, "drop rings with fewer than 3 distinct vertices");
   app.add_option("--threads", threads, "threads for the clip, 0 = every core (the answer is the same on any number)")
       ->capture_default_str();
