@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -94,6 +95,30 @@ struct NotThisWay {
   std::string why;
 };
 
+// A point strictly inside a face, not on its boundary: there the face's side of the region is
+// decided by the point's. GEOS's interior point can land on the boundary where its scan line
+// meets a vertex (a unit square turned by 30 degrees: the face was then taken for outside), so
+// it is verified, and else the centroid and the centroids of the shell's corners are tried.
+std::optional<Point> pointInside(const Geos& g, const GEOSGeometry* face) {
+  auto tryPoint = [&](GEOSGeometry* candidate) -> std::optional<Point> {
+    Geometry point(candidate, Deleter{g.get()});
+    double x, y;
+    if (!point || GEOSGeomGetX_r(g.get(), point.get(), &x) != 1 || GEOSGeomGetY_r(g.get(), point.get(), &y) != 1) {
+      return std::nullopt;
+    }
+    if (GEOSContains_r(g.get(), face, point.get()) != 1) return std::nullopt;
+    return Point{x, y};
+  };
+  if (auto p = tryPoint(GEOSPointOnSurface_r(g.get(), face))) return p;
+  if (auto p = tryPoint(GEOSGetCentroid_r(g.get(), face))) return p;
+  const Ring shell = ringOf(g, GEOSGetExteriorRing_r(g.get(), face));
+  for (std::size_t k = 0, n = shell.size(); k < n; ++k) {
+    const Point a = shell[(k + n - 1) % n], b = shell[k], c = shell[(k + 1) % n];
+    if (auto p = tryPoint(GEOSGeom_createPointFromXY_r(g.get(), (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3))) return p;
+  }
+  return std::nullopt;
+}
+
 // The rings' linework noded, every face of it whose inside point is inside the region by the
 // even-odd rule (exact), merged. gridSize 0: GEOS's floating noder, new nodes rounded to doubles;
 // else snap-rounded to that grid (OverlayNG with a fixed precision model: its result is valid
@@ -124,17 +149,28 @@ std::vector<PolygonWithHoles> evenOddFaces(const Region& region, double gridSize
   std::vector<GEOSGeometry*> inside;
   for (int i = 0, n = GEOSGetNumGeometries_r(g.get(), faces.get()); i < n; ++i) {
     const GEOSGeometry* face = GEOSGetGeometryN_r(g.get(), faces.get(), i);
-    Geometry point(GEOSPointOnSurface_r(g.get(), face), Deleter{g.get()});
-    double x, y;
-    need(point && GEOSGeomGetX_r(g.get(), point.get(), &x) == 1 && GEOSGeomGetY_r(g.get(), point.get(), &y) == 1);
-    if (insideEvenOdd(region, {x, y})) inside.push_back(GEOSGeom_clone_r(g.get(), face));
+    std::optional<Point> point = pointInside(g, face);
+    if (!point) {
+      // No double lies strictly inside a face an ulp wide; either side of it is within the
+      // rounding the area check below allows (which catches a wide face taken wrongly).
+      Geometry onSurface(GEOSPointOnSurface_r(g.get(), face), Deleter{g.get()});
+      double x, y;
+      need(onSurface && GEOSGeomGetX_r(g.get(), onSurface.get(), &x) == 1 && GEOSGeomGetY_r(g.get(), onSurface.get(), &y) == 1);
+      point = Point{x, y};
+    }
+    if (insideEvenOdd(region, *point)) inside.push_back(GEOSGeom_clone_r(g.get(), face));
   }
   Geometry kept(
       GEOSGeom_createCollection_r(g.get(), GEOS_MULTIPOLYGON, inside.data(), static_cast<unsigned>(inside.size())),
       Deleter{g.get()});
   need(kept != nullptr);
-  Geometry valid(gridSize > 0 ? GEOSUnaryUnionPrec_r(g.get(), kept.get(), gridSize) : GEOSUnaryUnion_r(g.get(), kept.get()),
+  // The kept faces of one noded linework share whole edges: a coverage union dissolves those
+  // without moving anything. GEOS's unary union nodes them again and may snap (Clipper2's test
+  // polygons 20 turned by 30 degrees: its union's layout needed ghcheck --ulps 17, the coverage
+  // union's passes at 2): only where the coverage union fails.
+  Geometry valid(gridSize > 0 ? GEOSUnaryUnionPrec_r(g.get(), kept.get(), gridSize) : GEOSCoverageUnion_r(g.get(), kept.get()),
                  Deleter{g.get()});
+  if (gridSize == 0 && (!valid || GEOSisValid_r(g.get(), valid.get()) != 1)) valid.reset(GEOSUnaryUnion_r(g.get(), kept.get()));
   need(valid != nullptr);
   if (GEOSisValid_r(g.get(), valid.get()) != 1) throw NotThisWay{"GEOS's noding of the crossing rings is not valid"};
   std::vector<PolygonWithHoles> out;
