@@ -1,5 +1,6 @@
 // Clips every example listed in experiments/examples/examples.txt and writes, per example, the
-// result (WKT), a picture (SVG) and its statistics, plus an index README.md.
+// result as GIS tools read it (WKT, the OGC layout ghclip writes by default), its raw rings
+// (.rings.wkt, for even-odd readers), a picture (SVG) and its statistics, plus an index README.md.
 //   run_examples EXAMPLES_DIR OUT_DIR
 #include <filesystem>
 #include <fstream>
@@ -46,7 +47,8 @@ int run(int argc, char** argv) {
     gh::Stats stats;
     const gh::Region result = gh::clip(subject, clip, *op, gh::optionsOf(kVariant), &stats);
     const double area = gh::evenOddArea(result);
-    gh::io::writeText((out / (name + ".wkt")).string(), gh::io::writeWkt(result));
+    gh::io::writeText((out / (name + ".wkt")).string(), gh::io::write(result, gh::io::Format::Wkt, gh::io::Layout::Ogc));
+    gh::io::writeText((out / (name + ".rings.wkt")).string(), gh::io::write(result, gh::io::Format::Wkt, gh::io::Layout::Rings));
     std::ostringstream title;
     title << subjectFile << " " << opName << " " << clipFile << " (" << gh::name(kVariant) << "): area " << area;
     gh::io::writeText((out / (name + ".svg")).string(),
@@ -68,7 +70,9 @@ int run(int argc, char** argv) {
   gh::io::writeText((out / "README.md").string(),
                     "# Examples\n\nEvery example in `experiments/examples/examples.txt`, clipped by "
                     "the " + std::string(gh::name(kVariant)) + " variant (the library's default). Areas are even-odd areas of the "
-                    "result.\n\n" +
+                    "result. `<example>.wkt` is the answer as GIS tools read it (the OGC layout `ghclip` writes "
+                    "by default: polygons with holes that GEOS calls valid), `<example>.rings.wkt` its raw rings "
+                    "(`--layout rings`: only an even-odd reader reads those right).\n\n" +
                         gh::experiments::markdown(prov) + "\n" + table.str());
   std::cout << "wrote " << all.size() << " examples to " << out.string() << "\n";
   return 0;
