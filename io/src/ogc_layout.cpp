@@ -95,28 +95,35 @@ struct NotThisWay {
   std::string why;
 };
 
-// A point strictly inside a face, not on its boundary: there the face's side of the region is
-// decided by the point's. GEOS's interior point can land on the boundary where its scan line
-// meets a vertex (a unit square turned by 30 degrees: the face was then taken for outside), so
-// it is verified, and else the centroid and the centroids of the shell's corners are tried.
-std::optional<Point> pointInside(const Geos& g, const GEOSGeometry* face) {
-  auto tryPoint = [&](GEOSGeometry* candidate) -> std::optional<Point> {
-    Geometry point(candidate, Deleter{g.get()});
+// The point that decides a face's side of the region: one strictly inside it, not on its
+// boundary. GEOS's interior point can land on the boundary where its scan line meets a vertex (a
+// unit square turned by 30 degrees: the face was then taken for outside), so it is verified, and
+// else the centroid and the centroids of the shell's corners are tried. A face with no double
+// strictly inside is an ulp wide: either side of it is within the rounding the area check allows
+// (which catches a wide face taken wrongly), and GEOS's interior point decides. Empty only when
+// GEOS fails.
+std::optional<Point> decidingPoint(const Geos& g, const GEOSGeometry* face) {
+  auto pointOf = [&](const Geometry& point) -> std::optional<Point> {
     double x, y;
     if (!point || GEOSGeomGetX_r(g.get(), point.get(), &x) != 1 || GEOSGeomGetY_r(g.get(), point.get(), &y) != 1) {
       return std::nullopt;
     }
-    if (GEOSContains_r(g.get(), face, point.get()) != 1) return std::nullopt;
     return Point{x, y};
   };
-  if (auto p = tryPoint(GEOSPointOnSurface_r(g.get(), face))) return p;
-  if (auto p = tryPoint(GEOSGetCentroid_r(g.get(), face))) return p;
+  auto strictlyInside = [&](GEOSGeometry* candidate) -> std::optional<Point> {
+    const Geometry point(candidate, Deleter{g.get()});
+    if (!point || GEOSContains_r(g.get(), face, point.get()) != 1) return std::nullopt;
+    return pointOf(point);
+  };
+  const Geometry onSurface(GEOSPointOnSurface_r(g.get(), face), Deleter{g.get()});
+  if (onSurface && GEOSContains_r(g.get(), face, onSurface.get()) == 1) return pointOf(onSurface);
+  if (auto p = strictlyInside(GEOSGetCentroid_r(g.get(), face))) return p;
   const Ring shell = ringOf(g, GEOSGetExteriorRing_r(g.get(), face));
   for (std::size_t k = 0, n = shell.size(); k < n; ++k) {
     const Point a = shell[(k + n - 1) % n], b = shell[k], c = shell[(k + 1) % n];
-    if (auto p = tryPoint(GEOSGeom_createPointFromXY_r(g.get(), (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3))) return p;
+    if (auto p = strictlyInside(GEOSGeom_createPointFromXY_r(g.get(), (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3))) return p;
   }
-  return std::nullopt;
+  return pointOf(onSurface);
 }
 
 // The rings' linework noded, every face of it whose inside point is inside the region by the
@@ -124,7 +131,11 @@ std::optional<Point> pointInside(const Geos& g, const GEOSGeometry* face) {
 // else snap-rounded to that grid (OverlayNG with a fixed precision model: its result is valid
 // by construction, every vertex moved by at most the grid). Checked valid, and of the region's
 // even-odd area to within what moving the boundary by `moved` can change: its length times that.
-std::vector<PolygonWithHoles> evenOddFaces(const Region& region, double gridSize, double moved) {
+struct Measures {
+  double area;      // the region's even-odd area
+  double boundary;  // the length of its rings
+};
+std::vector<PolygonWithHoles> evenOddFaces(const Region& region, const Measures& want, double gridSize, double moved) {
   Geos g;
   auto need = [&](bool ok) {
     if (!ok) throw NotThisWay{g.error()};
@@ -149,15 +160,8 @@ std::vector<PolygonWithHoles> evenOddFaces(const Region& region, double gridSize
   std::vector<GEOSGeometry*> inside;
   for (int i = 0, n = GEOSGetNumGeometries_r(g.get(), faces.get()); i < n; ++i) {
     const GEOSGeometry* face = GEOSGetGeometryN_r(g.get(), faces.get(), i);
-    std::optional<Point> point = pointInside(g, face);
-    if (!point) {
-      // No double lies strictly inside a face an ulp wide; either side of it is within the
-      // rounding the area check below allows (which catches a wide face taken wrongly).
-      Geometry onSurface(GEOSPointOnSurface_r(g.get(), face), Deleter{g.get()});
-      double x, y;
-      need(onSurface && GEOSGeomGetX_r(g.get(), onSurface.get(), &x) == 1 && GEOSGeomGetY_r(g.get(), onSurface.get(), &y) == 1);
-      point = Point{x, y};
-    }
+    const std::optional<Point> point = decidingPoint(g, face);
+    need(point.has_value());
     if (insideEvenOdd(region, *point)) inside.push_back(GEOSGeom_clone_r(g.get(), face));
   }
   Geometry kept(
@@ -168,25 +172,23 @@ std::vector<PolygonWithHoles> evenOddFaces(const Region& region, double gridSize
   // without moving anything. GEOS's unary union nodes them again and may snap (Clipper2's test
   // polygons 20 turned by 30 degrees: its union's layout needed ghcheck --ulps 17, the coverage
   // union's passes at 2): only where the coverage union fails.
-  Geometry valid(gridSize > 0 ? GEOSUnaryUnionPrec_r(g.get(), kept.get(), gridSize) : GEOSCoverageUnion_r(g.get(), kept.get()),
-                 Deleter{g.get()});
-  if (gridSize == 0 && (!valid || GEOSisValid_r(g.get(), valid.get()) != 1)) valid.reset(GEOSUnaryUnion_r(g.get(), kept.get()));
-  need(valid != nullptr);
-  if (GEOSisValid_r(g.get(), valid.get()) != 1) throw NotThisWay{"GEOS's noding of the crossing rings is not valid"};
-  std::vector<PolygonWithHoles> out;
-  collect(g, valid.get(), out);
-  // A face wrongly kept or left out changes the area by far more than moving the boundary does.
-  double length = 0;
-  for (const Ring& ring : region) {
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const Point a = ring[i], b = ring[(i + 1) % ring.size()];
-      length += std::hypot(b.x - a.x, b.y - a.y);
-    }
+  Geometry merged(gridSize > 0 ? GEOSUnaryUnionPrec_r(g.get(), kept.get(), gridSize) : GEOSCoverageUnion_r(g.get(), kept.get()),
+                  Deleter{g.get()});
+  auto isValid = [&](const Geometry& m) { return m && GEOSisValid_r(g.get(), m.get()) == 1; };
+  bool valid = isValid(merged);
+  if (!valid && gridSize == 0) {
+    merged.reset(GEOSUnaryUnion_r(g.get(), kept.get()));
+    valid = isValid(merged);
   }
-  const double want = evenOddArea(region), got = evenOddArea(toRegion(out));
-  if (!(std::abs(want - got) <= 1e-9 * std::abs(want) + length * moved)) {
+  need(merged != nullptr);
+  if (!valid) throw NotThisWay{"GEOS's noding of the crossing rings is not valid"};
+  std::vector<PolygonWithHoles> out;
+  collect(g, merged.get(), out);
+  // A face wrongly kept or left out changes the area by far more than moving the boundary does.
+  const double got = evenOddArea(toRegion(out));
+  if (!(std::abs(want.area - got) <= 1e-9 * std::abs(want.area) + want.boundary * moved)) {
     char why[160];
-    std::snprintf(why, sizeof why, "the noded faces have area %.17g, the answer %.17g", got, want);
+    std::snprintf(why, sizeof why, "the noded faces have area %.17g, the answer %.17g", got, want.area);
     throw NotThisWay{why};
   }
   return out;
@@ -204,9 +206,17 @@ std::vector<PolygonWithHoles> ogcPolygons(const Region& region) {
     for (const Point& p : ring) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
   }
   const double ulp = std::nextafter(largest, INFINITY) - largest;
+  // Measured once for every way tried (the even-odd area is quadratic in the vertices).
+  Measures want{evenOddArea(region), 0};
+  for (const Ring& ring : region) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Point a = ring[i], b = ring[(i + 1) % ring.size()];
+      want.boundary += std::hypot(b.x - a.x, b.y - a.y);
+    }
+  }
   std::string why;
   try {
-    return evenOddFaces(region, 0, 2 * ulp);
+    return evenOddFaces(region, want, 0, 2 * ulp);
   } catch (const NotThisWay& e) {
     why = e.why;
   }
@@ -214,7 +224,7 @@ std::vector<PolygonWithHoles> ogcPolygons(const Region& region) {
   // noding: snap-round them to the finest power-of-two grid that gives a valid answer.
   for (double grid = std::exp2(std::ceil(std::log2(ulp))), last = grid * 0x1p24; grid <= last; grid *= 16) {
     try {
-      return evenOddFaces(region, grid, 2 * grid);
+      return evenOddFaces(region, want, grid, 2 * grid);
     } catch (const NotThisWay&) {
     }
   }
