@@ -486,5 +486,40 @@ TEST(SamplingOracle, PruningAtRoundedCrossingsKeepsAWrongUnionWrong) {
   EXPECT_TRUE(oracle::sampleCheck(s, c, Op::Union, clip(s, c, Op::Union), options).pass());
 }
 
+// fuzz_diff_vatti (corpus input be9aa8b9...), the naive variant's reverse difference: slivers
+// a few hundred ulps wide, one of them wrong at a point 2e-15 from its vertex (hex: the answer's
+// constructed coordinates). Around a vertex a point is left out when the segment from a point
+// judged farther out in its direction meets no edge near the vertex; at a few ulps from the
+// vertex the vertex's own edges (rays) can lie between two such points, so they must be among
+// the edges tested: a judge that tested only the nearest edges not through the vertex let this
+// answer pass.
+TEST(SamplingOracle, PointsLeftOutNearAVertexLieInOneFaceWithAJudgedOne) {
+  const Region s = io::readWkt(
+      "MULTIPOLYGON(((3 1,0 3,3 3,3 3,3 0,2 3,3 1)),((3 4,8 3,3 3,3 5,3 5,5 5,5 5,5 5,1 7,0 0,0 0,0 0,3 4)),"
+      "((5 5,5 3,3 3,5 5)))");
+  const Region c = io::readWkt(
+      "MULTIPOLYGON(((3 3,5 5,3 3,3 3,0 1,3 3,3 3)),((3 3,1 1,1 1,1 1,4 1,1 1,3 3)),"
+      "((1 1,3 3,3 3,3 3,3 3,3 3,3 3,3 3,1 3,3 3,3 3,1 1)))");
+  const Region wrong{
+      {{0x1.7fffffffffc5fp+0, 0x1.ffffffffffbe4p+0}, {0x1.7fffffffffd77p+0, 0x1.ffffffffffc9fp+0},
+       {0x1.7fffffffffd76p+0, 0x1.ffffffffffc9dp+0}},
+      {{0x1.8p+1, 0x1.7fffffffffe4fp+1}, {0x1.8000000000288p+1, 0x1.8p+1}, {0x1.8000000000e0bp+1, 0x1.80000000007acp+1},
+       {0x1.8000000000289p+1, 0x1.8p+1}},
+      {{0x1.8p+1, 0x1.7fffffffff9a1p+1}, {0x1.800000000066p+1, 0x1.8p+1}, {0x1.8000000000e0bp+1, 0x1.80000000007acp+1},
+       {0x1.800000000065fp+1, 0x1.8p+1}},
+      {{0x1.8p+1, 0x1.7fffffffff9a1p+1}, {0x1.800000000065fp+1, 0x1.8p+1}, {0x1.8000000000e0bp+1, 0x1.80000000007acp+1},
+       {0x1.800000000066p+1, 0x1.8p+1}},
+      {{0x1.1745d1745d1cap+1, 0x1.3a2e8ba2e8aa1p+1}, {0x1.1745d1745d1cap+1, 0x1.3a2e8ba2e8aa2p+1},
+       {0x1.1fffffffffdecp+1, 0x1.3fffffffffd59p+1}},
+  };
+  oracle::SampleOptions options;
+  options.uniformPoints = 200;  // as the clip fuzz targets judge
+  const oracle::SampleVerdict v = oracle::sampleCheck(s, c, Op::ReverseDifference, wrong, options);
+  EXPECT_FALSE(v.pass());
+  ASSERT_TRUE(v.firstMismatch.has_value());
+  EXPECT_LT(std::hypot(v.firstMismatch->x - 0x1.7fffffffffc5fp+0, v.firstMismatch->y - 0x1.ffffffffffbe4p+0), 1e-14);
+  EXPECT_TRUE(oracle::sampleCheck(s, c, Op::ReverseDifference, clip(s, c, Op::ReverseDifference), options).pass());
+}
+
 }  // namespace
 }  // namespace gh
