@@ -9,7 +9,9 @@
 // sampled at its own size. Each point's sides of S, C and R are decided exactly: even-odd ray
 // tests with an exact orientation, except that near a vertex, where the answer's only edges are
 // rays from the vertex, one ray test decides R's side for the points there and the exact order
-// of their directions among the rays the rest.
+// of their directions among the rays the rest. Points that cannot change a verdict are left
+// out: around a vertex, the smaller radii inside its clearance, and a point that the segment
+// from a point judged farther out in its direction joins without meeting an edge (one face).
 //
 // Where a correct answer may legitimately disagree: within the rounding zones (exact_oracle.h),
 // which lie along the lines of S and C. A point is skipped when it is within
