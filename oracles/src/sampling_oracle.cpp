@@ -620,11 +620,11 @@ class RaysFrom {
 // is no nearer an edge (the inner is skipped whenever the outer is, as long as c/2 exceeds every
 // edge's delta, `delta`). Of the radii below c/2, only the largest is sampled.
 // widerClearance(cap), called at most once, after it, gives c': no edge comes within c' of q but
-// the edges near q, those through q and a few others. Inside the disk of radius c'/2, a point is left out when the segment from the last
-// point judged in its direction (farther out, inside that disk) to it meets none of those edges,
-// decided exactly (separated(outer, p) is false): then both lie in one face of their
-// arrangement, on the same side of S, C and the answer, and it would be judged as that point
-// was, or skipped. This keeps a vertex an ulp from an edge (whose c lies below every radius)
+// the edges near q, those through q and a few others. Inside the disk of radius c'/2, a point is
+// left out when the segment from the last point judged in its direction (farther out, inside that
+// disk) to it meets none of those edges, decided exactly (separated(outer, p) is false): then
+// both lie in one face of their arrangement, on the same side of S, C and the answer, and it
+// would be judged as that point was, or skipped. This keeps a vertex an ulp from an edge (whose c lies below every radius)
 // from costing 80 points. (Asked only where all eight radii are to be sampled: on the fuzz
 // corpora, asked wherever three or more were, finding c' cost more than the points it saved.)
 template <class Clearance, class WiderClearance, class Visit, class Separated>
@@ -739,8 +739,8 @@ class Sampler {
     if (!(box_.minX <= box_.maxX)) return v;
     ++epoch_;
     const EvenOddRegion inR(result);
-    // side: the answer's side at p when already known (from the rays at a vertex, below), else null.
-    // Whether p was judged (not skipped).
+    // Whether p was judged (not skipped). side: the answer's side at p when already known (from
+    // the rays at a vertex, below), else null.
     auto judge = [&](Point p, std::uint8_t state, const std::optional<bool>* side = nullptr) {
       const auto r = (state & kSkipped) ? std::nullopt : side ? *side : inR.inside(p);
       if (!r) {
