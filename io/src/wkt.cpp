@@ -2,7 +2,6 @@
 // "SRID=n;"): read and written with std::from_chars / std::to_chars (shortest round-trip form).
 // Boost.Geometry's reader, used before, took 3x GEOS's time and read "POLYGON((0 0 1, ...))" as
 // twice as many XY points; this one knows Z, M and ZM.
-#include <cctype>
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
