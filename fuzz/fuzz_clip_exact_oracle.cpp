@@ -3,6 +3,7 @@
 // recorded (counted apart), never a pass. The five answers are judged in one arrangement.
 #include "findings.h"
 #include "fuzz_input.h"
+#include "judge_heap.h"
 #include "ghclip/clip.h"
 #include "ghclip/errors.h"
 #include "ghoracle/exact_oracle.h"
@@ -22,6 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   std::vector<gh::oracle::ExactVerdict> verdicts;
   try {
+    const gh::fuzz::JudgeHeap heap;
     verdicts = gh::oracle::exactCheckAll(p.subject, p.clip, answers, {false, false, false});
   } catch (const gh::oracle::CannotJudge& e) {
     gh::fuzz::record("fuzz_clip_exact_oracle", std::string("cannot judge: ") + e.what(), p.subject, p.clip,

@@ -4,6 +4,7 @@
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include "findings.h"
+#include "judge_heap.h"
 #include "ghclip/clip.h"
 #include "ghclip/errors.h"
 #include "ghoracle/exact_oracle.h"
@@ -55,6 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   std::vector<double> differences;
   try {
+    const gh::fuzz::JudgeHeap heap;
     differences = gh::oracle::symmetricDifferenceAreas(answers);  // all five in one arrangement
   } catch (const gh::oracle::CannotJudge& e) {
     gh::fuzz::record("fuzz_diff_vatti", std::string("cannot judge: ") + e.what(), s, c, gh::kAllOps[0], data, size);
@@ -66,7 +68,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double allowed = gh::oracle::roundingAllowance(s, c, ours) + gh::oracle::roundingAllowance(s, c, theirs);
     if (differences[i] <= allowed) continue;
     try {
-      if (!gh::oracle::exactCheck(s, c, op, ours, {false, false, false}).pass) {
+      bool pass = false;
+      {
+        const gh::fuzz::JudgeHeap heap;
+        pass = gh::oracle::exactCheck(s, c, op, ours, {false, false, false}).pass;
+      }
+      if (!pass) {
         gh::fuzz::trap("exact variant wrong where Clipper 6.4.2 differs", s, c, op);
       }
     } catch (const gh::oracle::CannotJudge& e) {
