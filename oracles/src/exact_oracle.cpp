@@ -16,6 +16,8 @@
 #include <new>
 #include <set>
 #include <sstream>
+#include <tuple>
+#include <utility>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -72,14 +74,42 @@ using Halfedge = Arrangement::Halfedge_const_handle;
 using Vertex = Arrangement::Vertex_const_handle;
 using Interval = CGAL::Interval_nt<true>;  // protected: every interval contains the truth
 
-void addSegments(const Region& region, Counts counts, std::vector<Traits::Curve_2>& out) {
+// A segment of S, C or an answer, its ends in lexicographic order, with its counts.
+struct CountedSegment {
+  Point a, b;
+  Counts counts;
+};
+
+void addSegments(const Region& region, Counts counts, std::vector<CountedSegment>& out) {
   for (const Ring& ring : region) {
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-      const Point a = ring[i], b = ring[(i + 1) % n];
+      Point a = ring[i], b = ring[(i + 1) % n];
       if (a == b) continue;
-      out.emplace_back(SegmentTraits::Curve_2(KPoint(a.x, a.y), KPoint(b.x, b.y)), counts);
+      if (std::tie(b.x, b.y) < std::tie(a.x, a.y)) std::swap(a, b);
+      out.push_back({a, b, counts});
     }
   }
+}
+
+// One curve per distinct segment, carrying the sum of the counts of its copies: what the
+// arrangement makes of overlapping copies anyway (AddCounts), without computing each overlap in
+// exact arithmetic. The answers share most of their edges with S, C and one another.
+std::vector<Traits::Curve_2> mergedCurves(std::vector<CountedSegment> segments) {
+  const auto key = [](const CountedSegment& g) { return std::tie(g.a.x, g.a.y, g.b.x, g.b.y); };
+  std::sort(segments.begin(), segments.end(),
+            [&](const CountedSegment& l, const CountedSegment& r) { return key(l) < key(r); });
+  std::vector<Traits::Curve_2> curves;
+  for (std::size_t i = 0; i < segments.size();) {
+    Counts counts = segments[i].counts;
+    std::size_t next = i + 1;
+    for (; next < segments.size() && key(segments[next]) == key(segments[i]); ++next) {
+      counts = AddCounts()(counts, segments[next].counts);
+    }
+    const Point a = segments[i].a, b = segments[i].b;
+    curves.emplace_back(SegmentTraits::Curve_2(KPoint(a.x, a.y), KPoint(b.x, b.y)), counts);
+    i = next;
+  }
+  return curves;
 }
 
 // Parities and zone depths from the unbounded face outward, across every edge (breadth first).
@@ -250,13 +280,13 @@ void build(const std::vector<Traits::Curve_2>& curves, Arrangement& arr) {
 }
 
 std::vector<Traits::Curve_2> operandCurves(const Region& s, const Region& c, const std::vector<const Region*>& answers) {
-  std::vector<Traits::Curve_2> curves;
-  addSegments(normalized(s, OnBadRing::Drop), {1, 0, 0, 0}, curves);
-  addSegments(normalized(c, OnBadRing::Drop), {0, 1, 0, 0}, curves);
+  std::vector<CountedSegment> segments;
+  addSegments(normalized(s, OnBadRing::Drop), {1, 0, 0, 0}, segments);
+  addSegments(normalized(c, OnBadRing::Drop), {0, 1, 0, 0}, segments);
   for (std::size_t j = 0; j < answers.size(); ++j) {
-    addSegments(normalized(*answers[j], OnBadRing::Drop), {0, 0, 1u << j, 0}, curves);
+    addSegments(normalized(*answers[j], OnBadRing::Drop), {0, 0, 1u << j, 0}, segments);
   }
-  return curves;
+  return mergedCurves(std::move(segments));
 }
 
 std::string rationalText(const EFT& v) {
