@@ -17,9 +17,9 @@
 #include <set>
 #include <sstream>
 #include <tuple>
-#include <utility>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "ghclip/errors.h"
