@@ -6,8 +6,6 @@
 
 #include <cmath>
 #include <optional>
-#include <string>
-#include <vector>
 
 #include "findings.h"
 #include "fuzz_input.h"
@@ -44,19 +42,15 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
         if (!std::isfinite(q.x) || !std::isfinite(q.y)) trap("non-finite output", p.subject, p.clip, op);
       }
     }
-    std::vector<std::string> violations;
-    oracle::SampleVerdict v;
-    {
-      const JudgeHeap heap;
-      if (!invariants) invariants.emplace(p.subject, p.clip);
-      violations = invariants->violations(op, r);
-      if (!judge) judge.emplace(p.subject, p.clip, so);
-      v = judge->check(op, r);
-    }
+    const JudgeHeap heap;  // to the end of this operation's checks; the next clip runs outside it
+    if (!invariants) invariants.emplace(p.subject, p.clip);
+    const auto violations = invariants->violations(op, r);
     if (!violations.empty()) {
       if (strict) trap("invariant: " + violations.front(), p.subject, p.clip, op);
       record(target, "invariant: " + violations.front(), p.subject, p.clip, op, data, size);
     }
+    if (!judge) judge.emplace(p.subject, p.clip, so);
+    const auto v = judge->check(op, r);
     if (!v.pass()) {
       if (strict) trap("sampling oracle disagrees", p.subject, p.clip, op);
       record(target, "sampling oracle disagrees", p.subject, p.clip, op, data, size);

@@ -68,12 +68,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double allowed = gh::oracle::roundingAllowance(s, c, ours) + gh::oracle::roundingAllowance(s, c, theirs);
     if (differences[i] <= allowed) continue;
     try {
-      bool pass = false;
-      {
-        const gh::fuzz::JudgeHeap heap;
-        pass = gh::oracle::exactCheck(s, c, op, ours, {false, false, false}).pass;
-      }
-      if (!pass) {
+      const gh::fuzz::JudgeHeap heap;
+      if (!gh::oracle::exactCheck(s, c, op, ours, {false, false, false}).pass) {
         gh::fuzz::trap("exact variant wrong where Clipper 6.4.2 differs", s, c, op);
       }
     } catch (const gh::oracle::CannotJudge& e) {

@@ -624,9 +624,10 @@ class RaysFrom {
 // left out when the segment from the last point judged in its direction (farther out, inside that
 // disk) to it meets none of those edges, decided exactly (separated(outer, p) is false): then
 // both lie in one face of their arrangement, on the same side of S, C and the answer, and it
-// would be judged as that point was, or skipped. This keeps a vertex an ulp from an edge (whose c lies below every radius)
-// from costing 80 points. (Asked only where all eight radii are to be sampled: on the fuzz
-// corpora, asked wherever three or more were, finding c' cost more than the points it saved.)
+// would be judged as that point was, or skipped. This keeps a vertex an ulp from an edge (whose
+// c lies below every radius) from costing 80 points. (Asked only where all eight radii are to be
+// sampled: on the fuzz corpora, asked wherever three or more were, finding c' cost more than the
+// points it saved.)
 template <class Clearance, class WiderClearance, class Visit, class Separated>
 void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t seed, double delta,
                   Clearance&& clearanceBelow, WiderClearance&& widerClearance, Visit&& visit, Separated&& separated) {
