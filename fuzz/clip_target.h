@@ -17,8 +17,12 @@
 
 namespace gh::fuzz {
 
+// The clip targets' problems: up to 3 rings of up to 16 vertices each.
+inline Pair clipPair(const std::uint8_t* data, std::size_t size) { return pair(data, size, 3, 16); }
+inline ProblemKey clipProblem(const std::uint8_t* data, std::size_t size) { return keyOf(clipPair(data, size)); }
+
 inline int clipTarget(const char* target, Variant variant, const std::uint8_t* data, std::size_t size) {
-  const Pair p = pair(data, size, 3, 16);
+  const Pair p = clipPair(data, size);
   const bool strict = variant == Variant::Exact;
   oracle::SampleOptions so;
   so.uniformPoints = 200;

@@ -8,8 +8,20 @@
 #include "ghclip/errors.h"
 #include "ghoracle/exact_oracle.h"
 
+namespace {
+
+// This target's problems: up to 2 rings of up to 8 vertices each (the exact oracle is costly).
+gh::fuzz::Pair oraclePair(const std::uint8_t* data, std::size_t size) { return gh::fuzz::pair(data, size, 2, 8); }
+gh::fuzz::ProblemKey oracleProblem(const std::uint8_t* data, std::size_t size) {
+  return gh::fuzz::keyOf(oraclePair(data, size));
+}
+
+}  // namespace
+
+GHCLIP_NEW_PROBLEM_MUTATOR(oracleProblem)
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const gh::fuzz::Pair p = gh::fuzz::pair(data, size, 2, 8);
+  const gh::fuzz::Pair p = oraclePair(data, size);
   std::vector<gh::oracle::Answer> answers;
   for (gh::Op op : gh::kAllOps) {
     gh::Options o = gh::optionsOf(gh::Variant::Exact);

@@ -4,3 +4,5 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return gh::fuzz::clipTarget("fuzz_clip_naive", gh::Variant::Naive, data, size);
 }
+
+GHCLIP_NEW_PROBLEM_MUTATOR(gh::fuzz::clipProblem)

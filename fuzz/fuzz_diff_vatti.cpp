@@ -5,6 +5,7 @@
 
 #include "findings.h"
 #include "judge_heap.h"
+#include "new_problem_mutator.h"
 #include "ghclip/clip.h"
 #include "ghclip/errors.h"
 #include "ghoracle/exact_oracle.h"
@@ -30,7 +31,15 @@ gh::Region integerRegion(FuzzedDataProvider& in) {
   return r;
 }
 
+gh::fuzz::ProblemKey integerProblem(const std::uint8_t* data, std::size_t size) {
+  FuzzedDataProvider in(data, size);
+  const gh::Region s = integerRegion(in);
+  return gh::fuzz::ProblemKey().add(s).add(integerRegion(in));
+}
+
 }  // namespace
+
+GHCLIP_NEW_PROBLEM_MUTATOR(integerProblem)
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider in(data, size);

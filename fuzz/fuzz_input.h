@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "ghclip/region.h"
+#include "new_problem_mutator.h"
 
 namespace gh::fuzz {
 
@@ -57,5 +58,7 @@ inline Pair pair(const std::uint8_t* data, std::size_t size, int maxRings, int m
   p.clip = region(in, p.mode, maxRings, maxVertices);
   return p;
 }
+
+inline ProblemKey keyOf(const Pair& p) { return ProblemKey().add(p.mode).add(p.subject).add(p.clip); }
 
 }  // namespace gh::fuzz

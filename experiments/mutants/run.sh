@@ -91,7 +91,7 @@ fuzzAll() {
     corpus="$SCRATCH/corpus-$t"
     rm -rf "$corpus" && mkdir -p "$corpus"
     cp -r "$SRC/fuzz/${t}_seed_corpus/." "$corpus/" 2>/dev/null || true
-    if ! (cd "$SCRATCH" && "$fuzzBuild/bin/$t" -max_total_time="$fuzzSeconds" -print_final_stats=0 \
+    if ! (cd "$SCRATCH" && "$fuzzBuild/bin/$t" -max_total_time="$fuzzSeconds" -print_final_stats=0 -len_control=100 \
             "$corpus" >"$SCRATCH/fuzz-$t.log" 2>&1); then
       echo "$t (fuzzing)"
       return 1

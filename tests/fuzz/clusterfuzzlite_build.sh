@@ -19,7 +19,7 @@ passed=0 failed=0
 for t in fuzz_clip_naive fuzz_clip_sweep fuzz_clip_exact fuzz_clip_exact_oracle fuzz_diff_vatti fuzz_read; do
   mkdir -p "$TMP/seeds-$t"
   (cd "$TMP/seeds-$t" && unzip -q "$OUT/${t}_seed_corpus.zip")
-  if [[ -x "$OUT/$t" && -f "$OUT/$t.dict" ]] && "$OUT/$t" -runs=200 -dict="$OUT/$t.dict" "$TMP/seeds-$t" >/dev/null 2>&1; then
+  if [[ -x "$OUT/$t" && -f "$OUT/$t.dict" && -f "$OUT/$t.options" ]] && "$OUT/$t" -runs=200 -dict="$OUT/$t.dict" "$TMP/seeds-$t" >/dev/null 2>&1; then
     passed=$((passed + 1))
   else
     echo "FAIL: $t"
