@@ -3,6 +3,8 @@
 // variant traps, Clipper's failure is recorded as a finding about Clipper.
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <utility>
+
 #include "findings.h"
 #include "judge_heap.h"
 #include "new_problem_mutator.h"
@@ -31,10 +33,15 @@ gh::Region integerRegion(FuzzedDataProvider& in) {
   return r;
 }
 
-gh::fuzz::ProblemKey integerProblem(const std::uint8_t* data, std::size_t size) {
+// This target's problem, S then C: what it judges and what the mutator compares.
+std::pair<gh::Region, gh::Region> integerPair(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider in(data, size);
-  const gh::Region s = integerRegion(in);
-  return gh::fuzz::ProblemKey().add(s).add(integerRegion(in));
+  gh::Region s = integerRegion(in);
+  return {std::move(s), integerRegion(in)};
+}
+gh::fuzz::ProblemKey integerProblem(const std::uint8_t* data, std::size_t size) {
+  const auto [s, c] = integerPair(data, size);
+  return gh::fuzz::ProblemKey().add(s).add(c);
 }
 
 }  // namespace
@@ -42,8 +49,7 @@ gh::fuzz::ProblemKey integerProblem(const std::uint8_t* data, std::size_t size) 
 GHCLIP_NEW_PROBLEM_MUTATOR(integerProblem)
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  FuzzedDataProvider in(data, size);
-  const gh::Region s = integerRegion(in), c = integerRegion(in);
+  const auto [s, c] = integerPair(data, size);
   const gh::peers::Peer* vatti = gh::peers::findPeer("clipper6");
   std::vector<std::pair<gh::Region, gh::Region>> answers;  // (ours, Clipper's) per operation
   for (gh::Op op : gh::kAllOps) {
