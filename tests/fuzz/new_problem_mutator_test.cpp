@@ -112,6 +112,9 @@ TEST(ProblemKey, TellsProblemsApartByTheirBits) {
   EXPECT_TRUE(ProblemKey().add(square) == ProblemKey().add(square));
   EXPECT_FALSE(ProblemKey().add(square) == ProblemKey().add(negativeZero));
   EXPECT_FALSE(ProblemKey().add(square) == ProblemKey().add(twoRings));  // same points, other rings
+  const Region splitLater{{{0, 0}, {1, 0}, {1, 1}}, {{0, 1}, {2, 2}}};
+  const Region splitEarlier{{{0, 0}, {1, 0}}, {{1, 1}, {0, 1}, {2, 2}}};
+  EXPECT_FALSE(ProblemKey().add(splitLater) == ProblemKey().add(splitEarlier));  // same ring count too
   EXPECT_FALSE(ProblemKey().add(square).add(Region{}) == ProblemKey().add(Region{}).add(square));
   const double nan = std::nan("");
   const Region withNan{{{nan, 0}, {1, 0}, {1, 1}}};
