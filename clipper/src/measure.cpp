@@ -77,10 +77,16 @@ double evenOddArea(const Region& region) {
     }
   }
   std::sort(segs.begin(), segs.end(), [](const Segment& s, const Segment& t) { return s.a.x < t.a.x; });
+  // A proper crossing lies strictly inside both segments' x- and y-ranges (neither is vertical):
+  // pairs whose ranges only touch or miss are passed over before the four orientations.
   for (std::size_t i = 0; i < segs.size(); ++i) {
-    for (std::size_t j = i + 1; j < segs.size() && segs[j].a.x <= segs[i].b.x; ++j) {
+    const Segment& s = segs[i];
+    const double sy0 = std::min(s.a.y, s.b.y), sy1 = std::max(s.a.y, s.b.y);
+    for (std::size_t j = i + 1; j < segs.size() && segs[j].a.x < s.b.x; ++j) {
+      const Segment& t = segs[j];
+      if (std::max(t.a.y, t.b.y) <= sy0 || std::min(t.a.y, t.b.y) >= sy1) continue;
       double x;
-      if (properCrossingX(segs[i], segs[j], x)) xs.push_back(x);
+      if (properCrossingX(s, t, x)) xs.push_back(x);
     }
   }
   std::sort(xs.begin(), xs.end());
