@@ -1,10 +1,12 @@
 // libFuzzer target: small fuzzed inputs, the exact variant judged by the exact CGAL oracle.
 // Any answer with a wrong face beyond the rounding zones traps; a case the oracle cannot judge is
 // recorded (counted apart), never a pass. The five answers are judged in one arrangement.
+#include <optional>
+
 #include "findings.h"
 #include "fuzz_input.h"
 #include "judge_heap.h"
-#include "ghclip/clip.h"
+#include "ghclip/clipping.h"
 #include "ghclip/errors.h"
 #include "ghoracle/exact_oracle.h"
 
@@ -23,12 +25,15 @@ GHCLIP_NEW_PROBLEM_MUTATOR(oracleProblem)
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const gh::fuzz::Pair p = oraclePair(data, size);
   std::vector<gh::oracle::Answer> answers;
+  std::optional<gh::Clipping> clipping;  // phases 1 and 2 once for the five operations
+  try {
+    clipping.emplace(p.subject, p.clip, gh::optionsOf(gh::Variant::Exact));
+  } catch (const gh::InvalidInput&) {
+    return 0;
+  }
   for (gh::Op op : gh::kAllOps) {
-    gh::Options o = gh::optionsOf(gh::Variant::Exact);
     try {
-      answers.push_back({op, gh::clip(p.subject, p.clip, op, o)});
-    } catch (const gh::InvalidInput&) {
-      return 0;
+      answers.push_back({op, clipping->result(op)});
     } catch (const gh::ClipFailure& e) {
       gh::fuzz::trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
     }

@@ -3,12 +3,13 @@
 // variant traps, Clipper's failure is recorded as a finding about Clipper.
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <optional>
 #include <utility>
 
 #include "findings.h"
 #include "judge_heap.h"
 #include "new_problem_mutator.h"
-#include "ghclip/clip.h"
+#include "ghclip/clipping.h"
 #include "ghclip/errors.h"
 #include "ghoracle/exact_oracle.h"
 #include "ghpeers/peer.h"
@@ -52,14 +53,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto [s, c] = integerPair(data, size);
   const gh::peers::Peer* vatti = gh::peers::findPeer("clipper6");
   std::vector<std::pair<gh::Region, gh::Region>> answers;  // (ours, Clipper's) per operation
+  std::optional<gh::Clipping> clipping;  // phases 1 and 2 once for the five operations
+  try {
+    clipping.emplace(s, c, gh::optionsOf(gh::Variant::Exact));
+  } catch (const gh::InvalidInput&) {
+    return 0;  // refused: Clipper is not asked about input we refuse
+  }
   for (gh::Op op : gh::kAllOps) {
-    gh::Options o = gh::optionsOf(gh::Variant::Exact);
-    gh::Region ours;
-    try {
-      ours = gh::clip(s, c, op, o);
-    } catch (const gh::InvalidInput&) {
-      return 0;  // refused: Clipper is not asked about input we refuse
-    }
+    gh::Region ours = clipping->result(op);
     gh::Region theirs;
     try {
       theirs = vatti->clip(s, c, op);

@@ -1,13 +1,16 @@
 // The orchestrator: validate, phase 1, phase 2, phase 3, clean-up (clipper/src/README.md maps the
 // paper's sections to the files). The arithmetic policy is chosen once here; the paper's
-// perturbation wraps phase 1 for the paper arithmetic only.
+// perturbation wraps phase 1 for the paper arithmetic only. Clipping keeps phases 1 and 2 for
+// phase 3 of several operations; clip() is a Clipping asked once.
 #include "ghclip/clip.h"
 
 #include <chrono>
+#include <optional>
 
 #include "arithmetic/exact_arithmetic.h"
 #include "arithmetic/paper_arithmetic.h"
 #include "cleanup.h"
+#include "ghclip/clipping.h"
 #include "ghclip/measure.h"
 #include "paper_perturbation.h"
 #include "phase1_intersections.h"
@@ -44,45 +47,45 @@ Phase1Result phase1(Operand s, Operand c, const CandidateSearch& search, const P
 bool autoSweeps(const PaperArithmetic&, const Operand&, const Operand&) { return false; }
 bool autoSweeps(const ExactArithmetic&, const Operand& s, const Operand& c) { return sweepPays(s, c); }
 
-template <class Arithmetic>
-Region clipWith(Operand s, Operand c, Op op, const Options& options, Stats& stats) {
-  ExactCounters counters;
-  const Arithmetic arithmetic(counters);
-
-  const unsigned threads = options.threads == 0 ? availableThreads() : options.threads;
-  auto t = Clock::now();
-  const bool sweep = options.search == Search::Auto ? autoSweeps(arithmetic, s, c) : options.search == Search::Sweep;
-  Phase1Result crossings =
-      sweep ? phase1(std::move(s), std::move(c), SweepSearch{}, arithmetic, stats, threads)
-            : phase1(std::move(s), std::move(c), AllPairsSearch{}, arithmetic, stats, threads);
-  stats.phase1Seconds = secondsSince(t);
-
-  t = Clock::now();
-  VertexGraph graph = buildVertexGraph(crossings);
-  locateRingStarts(graph, arithmetic, threads);
-  markEntryExit(graph);
-  stats.phase2Seconds = secondsSince(t);
-
-  t = Clock::now();
-  FlatRings traced;
-  borrow<Spare::TracedPoints>(traced.points);
-  traceResult(graph, op, traced, threads);
-  Region result = cleanedUp(traced, Arithmetic::kLeavesZeroWidthParts, counters);
-  stats.phase3Seconds = secondsSince(t);
-
-  giveBack<Spare::SubjectNodes>(crossings.subjectNodes);
-  giveBack<Spare::ClipNodes>(crossings.clipNodes);
-  giveBack<Spare::TracedPoints>(traced.points);
-  stats.filterFailures = counters.filterFailures;
-  stats.expansionDecisions = counters.expansionDecisions;
-  stats.exactConstructions = counters.exactConstructions;
-  return result;
-}
-
 }  // namespace
 
-Region clip(const Region& subject, const Region& clip, Op op, const Options& options, Stats* stats) {
-  Stats local;
+// Phases 1 and 2, kept for phase 3 of every operation asked. The graph refers to `crossings`
+// (its operands and lists), so a Prepared never moves: it lives behind Clipping's pointer.
+struct Clipping::Prepared {
+  std::optional<Phase1Result> crossings;  // set once phase 1 has run
+  VertexGraph graph;
+  bool dissolve = false;   // the arithmetic's clean-up dissolves zero-width seams
+  ExactCounters counters;  // phases 1 and 2's; each operation adds its clean-up's to a copy
+  Stats stats;             // phases 1 and 2's
+  unsigned threads = 1;
+
+  ~Prepared() {
+    if (!crossings) return;
+    giveBack<Spare::SubjectNodes>(crossings->subjectNodes);
+    giveBack<Spare::ClipNodes>(crossings->clipNodes);
+  }
+
+  template <class Arithmetic>
+  void run(Operand s, Operand c, const Options& options) {
+    const Arithmetic arithmetic(counters);
+    threads = options.threads == 0 ? availableThreads() : options.threads;
+    auto t = Clock::now();
+    const bool sweep = options.search == Search::Auto ? autoSweeps(arithmetic, s, c) : options.search == Search::Sweep;
+    crossings.emplace(sweep ? phase1(std::move(s), std::move(c), SweepSearch{}, arithmetic, stats, threads)
+                            : phase1(std::move(s), std::move(c), AllPairsSearch{}, arithmetic, stats, threads));
+    stats.phase1Seconds = secondsSince(t);
+
+    t = Clock::now();
+    graph = buildVertexGraph(*crossings);
+    locateRingStarts(graph, arithmetic, threads);
+    markEntryExit(graph);
+    stats.phase2Seconds = secondsSince(t);
+    dissolve = Arithmetic::kLeavesZeroWidthParts;
+  }
+};
+
+Clipping::Clipping(const Region& subject, const Region& clip, const Options& options)
+    : prepared_(std::make_unique<Prepared>()) {
   // Validation copies the input once, straight into phase 1's flat arrays; a refusal names the
   // operand it concerns.
   auto validated = [&](const Region& region, const char* operand) {
@@ -94,15 +97,42 @@ Region clip(const Region& subject, const Region& clip, Op op, const Options& opt
   };
   Operand s = validated(subject, "subject");
   Operand c = validated(clip, "clip");
-  local.subjectVertices = s.size();
-  local.clipVertices = c.size();
-  Region result = options.arithmetic == Arithmetic::Exact
-                      ? clipWith<ExactArithmetic>(std::move(s), std::move(c), op, options, local)
-                      : clipWith<PaperArithmetic>(std::move(s), std::move(c), op, options, local);
+  Prepared& p = *prepared_;
+  p.stats.subjectVertices = s.size();
+  p.stats.clipVertices = c.size();
+  if (options.arithmetic == Arithmetic::Exact) {
+    p.run<ExactArithmetic>(std::move(s), std::move(c), options);
+  } else {
+    p.run<PaperArithmetic>(std::move(s), std::move(c), options);
+  }
+}
+
+Clipping::~Clipping() = default;
+Clipping::Clipping(Clipping&&) noexcept = default;
+Clipping& Clipping::operator=(Clipping&&) noexcept = default;
+
+Region Clipping::result(Op op, Stats* stats) {
+  Prepared& p = *prepared_;
+  Stats local = p.stats;
+  ExactCounters counters = p.counters;
+  const auto t = Clock::now();
+  FlatRings traced;
+  borrow<Spare::TracedPoints>(traced.points);
+  traceResult(p.graph, op, traced, p.threads);
+  Region result = cleanedUp(traced, p.dissolve, counters);
+  local.phase3Seconds = secondsSince(t);
+  giveBack<Spare::TracedPoints>(traced.points);
+  local.filterFailures = counters.filterFailures;
+  local.expansionDecisions = counters.expansionDecisions;
+  local.exactConstructions = counters.exactConstructions;
   local.outputRings = result.size();
   local.outputVertices = vertexCount(result);
   if (stats) *stats = local;
   return result;
+}
+
+Region clip(const Region& subject, const Region& clip, Op op, const Options& options, Stats* stats) {
+  return Clipping(subject, clip, options).result(op, stats);
 }
 
 }  // namespace gh
