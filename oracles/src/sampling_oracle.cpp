@@ -61,12 +61,15 @@ std::size_t bucket(double v, double lo, double hi, std::size_t n) {
 // A region's edges in horizontal bands, so that a ray test visits only the edges whose y-range
 // can hold the point's y (every other edge lies wholly above or below it and cannot count). The
 // band of a y is a monotone function of y, so an edge with ymin <= y <= ymax is always found.
+// A point right of its band's middle casts its ray to the right, one left of it to the left, so
+// that a test reads about half the band: under the half-open rule every ring crosses the point's
+// horizontal line an even number of times, so off the boundary both rays have the same parity.
 class EvenOddRegion {
  public:
   explicit EvenOddRegion(const Region& region) {
     std::vector<Edge> edges;
     for (const Ring& ring : region) {
-      for (std::size_t i = 0, n = ring.size(); i < n; ++i) edges.push_back({ring[i], ring[(i + 1) % n]});
+      for (std::size_t i = 0, n = ring.size(); i < n; ++i) edges.push_back(edgeOf(ring[i], ring[(i + 1) % n]));
     }
     if (edges.empty()) return;
     minY_ = maxY_ = edges[0].a.y;
@@ -84,57 +87,73 @@ class EvenOddRegion {
       for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) ++start_[k + 1];
     }
     for (std::size_t k = 0; k < bands_; ++k) start_[k + 1] += start_[k];
-    // Each band holds copies of its edges (a ray test reads them in order, not scattered).
-    banded_.resize(start_[bands_]);
+    // Each band holds copies of its edges (a ray test reads them in order, not scattered), twice:
+    // from the rightmost right end leftwards (a ray to the right stops at the first edge wholly
+    // left of its point, as every edge after it is) and from the leftmost left end rightwards.
+    rightward_.resize(start_[bands_]);
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
     for (const Edge& e : edges) {
-      for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) banded_[fill[k]++] = e;
+      for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) rightward_[fill[k]++] = e;
     }
-    // Each band from the rightmost edge leftwards: a ray test stops at the first edge that lies
-    // wholly left of its point, as every edge after it does (none of them can count).
-    auto right = [](const Edge& e) { return std::max(e.a.x, e.b.x); };
+    leftward_ = rightward_;
+    middle_.assign(bands_, 0);
     for (std::size_t k = 0; k < bands_; ++k) {
-      std::sort(banded_.begin() + start_[k], banded_.begin() + start_[k + 1],
-                [&](const Edge& e, const Edge& f) { return right(e) > right(f); });
+      std::sort(rightward_.begin() + start_[k], rightward_.begin() + start_[k + 1],
+                [](const Edge& e, const Edge& f) { return e.maxX > f.maxX; });
+      std::sort(leftward_.begin() + start_[k], leftward_.begin() + start_[k + 1],
+                [](const Edge& e, const Edge& f) { return e.minX < f.minX; });
+      // The middle of the band's x-range (in halves: no overflow near 2^1023).
+      if (start_[k + 1] > start_[k]) middle_[k] = leftward_[start_[k]].minX / 2 + rightward_[start_[k]].maxX / 2;
     }
   }
 
-  // Even-odd parity of a rightward ray from p, exactly; nullopt when p lies on an edge (on the
-  // boundary, inside and outside are a convention, not an answer).
+  // Even-odd parity of a ray from p, exactly; nullopt when p lies on an edge (on the boundary,
+  // inside and outside are a convention, not an answer).
   std::optional<bool> inside(Point p) const {
-    if (banded_.empty() || !(p.y >= minY_ && p.y <= maxY_)) return false;
-    bool in = false;
+    if (rightward_.empty() || !(p.y >= minY_ && p.y <= maxY_)) return false;
     const std::size_t k = band(p.y);
-    for (std::size_t m = start_[k]; m < start_[k + 1]; ++m) {
-      const Point& a = banded_[m].a;
-      const Point& b = banded_[m].b;
-      if (p.x > std::max(a.x, b.x)) break;  // this edge and all after it lie left of p
-      if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
-      const bool crosses = (a.y > p.y) != (b.y > p.y);
-      if (!crosses && (p.x < std::min(a.x, b.x) || p.x > std::max(a.x, b.x))) continue;
-      if (crosses && p.x > std::max(a.x, b.x)) continue;  // crosses p's line left of p
-      if (crosses && p.x < std::min(a.x, b.x)) {            // right of p: no orientation needed
-        in = !in;
-        continue;
-      }
-      const int o = orientation(a, b, p);
-      if (o == 0 && p.x >= std::min(a.x, b.x) && p.x <= std::max(a.x, b.x)) return std::nullopt;
-      // The edge crosses p's horizontal line to the right of p when p is on its left going
-      // upward (on its right going downward).
-      if (crosses && (b.y > a.y ? o > 0 : o < 0)) in = !in;
-    }
-    return in;
+    return p.x >= middle_[k] ? parity<true>(p, rightward_.data() + start_[k], rightward_.data() + start_[k + 1])
+                             : parity<false>(p, leftward_.data() + start_[k], leftward_.data() + start_[k + 1]);
   }
 
  private:
   struct Edge {
     Point a, b;
+    double minX, maxX;
   };
+  static Edge edgeOf(Point a, Point b) { return {a, b, std::min(a.x, b.x), std::max(a.x, b.x)}; }
+
+  // The parity of the edges in [first, last) that cross p's horizontal line on the ray's side of p.
+  template <bool kToTheRight>
+  static std::optional<bool> parity(Point p, const Edge* first, const Edge* last) {
+    bool in = false;
+    for (const Edge* e = first; e != last; ++e) {
+      if (kToTheRight ? p.x > e->maxX : p.x < e->minX) break;  // this edge and all after it lie behind p
+      const Point& a = e->a;
+      const Point& b = e->b;
+      if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
+      const bool crosses = (a.y > p.y) != (b.y > p.y);
+      const bool within = p.x >= e->minX && p.x <= e->maxX;
+      if (!crosses && !within) continue;
+      if (crosses && !within) {  // wholly on the ray's side of p: no orientation needed
+        in = !in;
+        continue;
+      }
+      const int o = orientation(a, b, p);
+      if (o == 0) return std::nullopt;  // within its x-range and on its line: on the edge
+      // The edge crosses p's horizontal line to the right of p when p is on its left going
+      // upward (on its right going downward); to the left of p in the other two cases.
+      if (crosses && ((b.y > a.y ? o > 0 : o < 0) == kToTheRight)) in = !in;
+    }
+    return in;
+  }
+
   std::size_t band(double y) const { return bucket(y, minY_, maxY_, bands_); }
   double minY_ = 0, maxY_ = 0;
   std::size_t bands_ = 1;
   std::vector<std::size_t> start_;
-  std::vector<Edge> banded_;
+  std::vector<Edge> rightward_, leftward_;  // each band's edges, by right end down, by left end up
+  std::vector<double> middle_;              // per band: rays from points left of it go left
 };
 
 // The edges of S and C, with what a point near one needs to know: how far from it a correct
