@@ -716,6 +716,11 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
   }
 }
 
+// A bound on the error of a distance, or of a point's rounding, in a box.
+double slackOf(const Box& box) {
+  return 32 * ulpOf(std::max({std::abs(box.minX), std::abs(box.maxX), std::abs(box.minY), std::abs(box.maxY)}));
+}
+
 // The check proper, on a problem at a comfortable scale (ulpFloor is the original's smallest ulp
 // at this scale), split so that several answers for the same S and C share the work that does
 // not depend on the answer. What a point needs besides the answer (whether it is too near an
@@ -725,7 +730,8 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
 // shared by several answers. Each point is judged once per answer.
 class Sampler {
  public:
-  // box: the joint bounding box of everything that will be judged (S, C, and the answers).
+  // box: S and C's joint bounding box, where every operation's answer lies (the answer's own box
+  // when S and C are both empty).
   Sampler(const Region& subject, const Region& clip, const Box& box, const SampleOptions& options, double ulpFloor)
       : options_(options), box_(box), subject_(subject), clip_(clip),
         operandEdges_(subject, clip, options.constructionUlps, ulpFloor), inS_(subject), inC_(clip),
@@ -736,7 +742,7 @@ class Sampler {
     }
     operandClearance_.resize(vertices);
     if (!(box.minX <= box.maxX)) return;  // everything empty: nothing to check
-    slack_ = 32 * ulpOf(std::max({std::abs(box.minX), std::abs(box.maxX), std::abs(box.minY), std::abs(box.maxY)}));
+    slack_ = slackOf(box);
     // Halves first: the extent of coordinates near 2^500 must not overflow.
     extent_ = std::max({(box.maxX / 2 - box.minX / 2) * 2, (box.maxY / 2 - box.minY / 2) * 2,
                         std::numeric_limits<double>::min()});
@@ -749,15 +755,16 @@ class Sampler {
     }
   }
 
-  bool holds(const Box& b) const {
-    return !(b.minX <= b.maxX) || (b.minX >= box_.minX && b.maxX <= box_.maxX && b.minY >= box_.minY && b.maxY <= box_.maxY);
-  }
+  bool empty() const { return !(box_.minX <= box_.maxX); }
 
   SampleVerdict check(Op op, const Region& result) {
     const auto start = std::chrono::steady_clock::now();
     SampleVerdict v;
-    if (!(box_.minX <= box_.maxX)) return v;
+    if (empty()) return v;
     ++epoch_;
+    Box reach = box_;  // S, C and the answer
+    reach.grow(result);
+    const double slack = std::max(slack_, slackOf(reach));
     const EvenOddRegion inR(result);
     // Whether p was judged (not skipped). side: the answer's side at p when already known (from
     // the rays at a vertex, below), else null.
@@ -775,6 +782,20 @@ class Sampler {
       return true;
     };
     for (const auto& [p, state] : uniform_) judge(p, state);
+    // An answer reaching beyond S and C's box (a wrong one, or the paper arithmetic's, whose
+    // perturbation moves vertices) is sampled there too: of as many points drawn uniformly over the
+    // box of S, C and the answer, those that land outside S and C's box.
+    if (reach.minX < box_.minX || reach.maxX > box_.maxX || reach.minY < box_.minY || reach.maxY > box_.maxY) {
+      std::mt19937_64 rng(mixBits(options_.seed ^ 0xB0C5B0C5B0C5B0C5ull));
+      std::uniform_real_distribution<double> ux(reach.minX, reach.maxX), uy(reach.minY, reach.maxY);
+      for (std::size_t i = 0; i < options_.uniformPoints; ++i) {
+        const double x = ux(rng);
+        const Point p{x, uy(rng)};
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+        if (p.x >= box_.minX && p.x <= box_.maxX && p.y >= box_.minY && p.y <= box_.maxY) continue;
+        judge(p, sides(p));
+      }
+    }
     if (options_.nearVertices) {
       const SegmentGrid answerGrid(result);
       // Whether p was judged (not skipped), now or earlier for this answer.
@@ -834,7 +855,7 @@ class Sampler {
               // Within this radius the answer's edges are the rays from q: short of the
               // clearance by far more than the error of a distance in doubles or of a point's
               // rounding (a few ulps of the box's magnitude).
-              rays_.reset(q, 0.49 * strictAnswers - slack_);
+              rays_.reset(q, 0.49 * strictAnswers - slack);
               for (std::uint32_t e : atQ_) {
                 rays_.add(answerGrid.segment(e).first);
                 rays_.add(answerGrid.segment(e).second);
@@ -924,17 +945,23 @@ Box boxOf(std::initializer_list<const Region*> regions) {
   return box;
 }
 
+// What a Sampler samples uniformly: S and C's box, or the answer's when S and C are both empty.
+Box operandBox(const Region& subject, const Region& clip, const Region& result) {
+  const Box box = boxOf({&subject, &clip});
+  return box.minX <= box.maxX ? box : boxOf({&result});
+}
+
 }  // namespace
 
 SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, const Region& result,
                           const SampleOptions& options) {
   const double denormMin = std::numeric_limits<double>::denorm_min();
   const int k = judgingExponent(subject, clip, result);
-  if (k == 0) return Sampler(subject, clip, boxOf({&subject, &clip, &result}), options, denormMin).check(op, result);
+  if (k == 0) return Sampler(subject, clip, operandBox(subject, clip, result), options, denormMin).check(op, result);
   // Scaled from subnormal coordinates, the original's rounding grid becomes coarse there: its
   // smallest ulp, denorm_min, is 2^k * denorm_min at this scale.
   const Region s = scaledBy(subject, k), c = scaledBy(clip, k), r = scaledBy(result, k);
-  SampleVerdict v = Sampler(s, c, boxOf({&s, &c, &r}), options, std::ldexp(denormMin, std::max(k, 0))).check(op, r);
+  SampleVerdict v = Sampler(s, c, operandBox(s, c, r), options, std::ldexp(denormMin, std::max(k, 0))).check(op, r);
   v.delta = std::ldexp(v.delta, -k);
   if (v.firstMismatch) v.firstMismatch = scaledBy(*v.firstMismatch, -k);
   return v;
@@ -963,12 +990,12 @@ SamplingJudge::~SamplingJudge() = default;
 
 SampleVerdict SamplingJudge::check(Op op, const Region& result) {
   Shared& sh = *shared_;
-  // An answer reaching beyond S and C's box, or changing the judging scale (both only when it is
-  // wrong), is judged on its own, over the larger box.
+  // An answer that changes the judging scale (only a wrong one can), or one beside empty S and C
+  // (sampled over its own box), is judged on its own.
   if (judgingExponent(sh.subject, sh.clip, result) != sh.k) return sampleCheck(sh.subject, sh.clip, op, result, options_);
+  if (sh.sampler->empty() && !result.empty()) return sampleCheck(sh.subject, sh.clip, op, result, options_);
   const Region scaled = sh.k == 0 ? Region() : scaledBy(result, sh.k);
   const Region& r = sh.k == 0 ? result : scaled;
-  if (!sh.sampler->holds(boxOf({&r}))) return sampleCheck(sh.subject, sh.clip, op, result, options_);
   SampleVerdict v = sh.sampler->check(op, r);
   v.delta = std::ldexp(v.delta, -sh.k);
   if (v.firstMismatch) v.firstMismatch = scaledBy(*v.firstMismatch, -sh.k);

@@ -493,6 +493,25 @@ TEST(SamplingOracle, PruningAtRoundedCrossingsKeepsAWrongUnionWrong) {
 // vertex the vertex's own edges (rays) can lie between two such points, so they must be among
 // the edges tested: a judge that tested only the nearest edges not through the vertex let this
 // answer pass.
+// Every operation's answer lies in S and C's box, which the uniform points cover once for all
+// answers; an answer reaching beyond it is sampled beyond it too. Uniform points alone (no points
+// near vertices) must find a wrong square far outside, where S and C are not.
+TEST(SamplingOracle, UniformPointsReachAnAnswerBeyondTheOperandsBox) {
+  const Region square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  const Region far{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{10, 10}, {11, 10}, {11, 11}, {10, 11}}};
+  oracle::SampleOptions options;
+  options.nearVertices = false;
+  options.uniformPoints = 2000;
+  const oracle::SampleVerdict v = oracle::sampleCheck(square, square, Op::Intersection, far, options);
+  EXPECT_FALSE(v.pass());
+  ASSERT_TRUE(v.firstMismatch.has_value());
+  EXPECT_GE(v.firstMismatch->x, 10);
+  EXPECT_GE(v.firstMismatch->y, 10);
+  oracle::SamplingJudge judge(square, square, options);
+  EXPECT_EQ(judge.check(Op::Intersection, far).mismatched, v.mismatched);
+  EXPECT_TRUE(judge.check(Op::Intersection, square).pass());
+}
+
 TEST(SamplingOracle, PointsLeftOutNearAVertexLieInOneFaceWithAJudgedOne) {
   const Region s = io::readWkt(
       "MULTIPOLYGON(((3 1,0 3,3 3,3 3,3 0,2 3,3 1)),((3 4,8 3,3 3,3 5,3 5,5 5,5 5,5 5,1 7,0 0,0 0,0 0,3 4)),"

@@ -1,17 +1,19 @@
 // The sampling oracle: cheap, CGAL-free, good enough to call inside a fuzzer.
 //
-// Points are drawn (seeded) uniformly in the joint bounding box of S, C and R, and around every
-// vertex of S, C and R in eight directions (from a phase fixed by the vertex and the seed, so a
-// vertex shared by S and R is sampled at the same points) plus both ways along the corner's
-// bisector, at radii
-// both global (extent * 2^-8, 2^-14, 2^-20, 2^-26) and local (the vertex's shorter edge times
-// 2^-2, 2^-5, 2^-10, 2^-20), so that a small feature next to a large one, or a thin spike, is
-// sampled at its own size. Each point's sides of S, C and R are decided exactly: even-odd ray
-// tests with an exact orientation, except that near a vertex, where the answer's only edges are
-// rays from the vertex, one ray test decides R's side for the points there and the exact order
-// of their directions among the rays the rest. Points that cannot change a verdict are left
-// out: around a vertex, the smaller radii inside its clearance, and a point that the segment
-// from a point judged farther out in its direction joins without meeting an edge (one face).
+// Points are drawn (seeded) uniformly in the joint bounding box of S and C, where every
+// operation's answer lies (an answer reaching beyond it gets as many more drawn over the box of S,
+// C and R, of which those outside S and C's box are judged), and around every vertex of S, C and
+// R in eight directions (from a phase fixed by the vertex and the seed, so a vertex shared by S
+// and R is sampled at the same points) plus both ways along the corner's bisector, at radii both
+// global (extent of S and C's box * 2^-8, 2^-14, 2^-20, 2^-26) and local (the vertex's shorter
+// edge times 2^-2, 2^-5, 2^-10, 2^-20), so that a small feature next to a large one, or a thin
+// spike, is sampled at its own size. Each point's sides of S, C and R are decided exactly:
+// even-odd ray tests with an exact orientation, except that near a vertex, where the answer's
+// only edges are rays from the vertex, one ray test decides R's side for the points there and the
+// exact order of their directions among the rays the rest. Points that cannot change a verdict
+// are left out: around a vertex, the smaller radii inside its clearance, and a point that the
+// segment from a point judged farther out in its direction joins without meeting an edge (one
+// face).
 //
 // Where a correct answer may legitimately disagree: within the rounding zones (exact_oracle.h),
 // which lie along the lines of S and C. A point is skipped when it is within
