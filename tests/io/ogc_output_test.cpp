@@ -174,6 +174,34 @@ TEST(OgcOutput, SliversOfShiftedCopiesAreWrittenValid) {
   }
 }
 
+// Found by the fuzz campaign at a66d06c (fuzz_clip_naive's finding input-1cff621a1c070b84, whose
+// picture ghclip drew): the exact union of these operands is one crossing ring with a vertex at
+// (denorm_min, -2 denorm_min), and GEOS gave the face there a point on its surface with x NaN;
+// the writer's even-odd test of that point reached GMP, which raised SIGFPE. Every operation's
+// answer must be written, valid, with its even-odd area.
+TEST(OgcOutput, AFaceAtSubnormalCoordinatesGetsAFinitePoint) {
+  const Region s = io::readWkt("MULTIPOLYGON(((5e-324 -1e-323,7.999999999999999 0,0 0,8 4,6 0,5e-324 -1e-323)))");
+  const Region c = io::readWkt(
+      "MULTIPOLYGON(((8 1.0000000000000002,8 6.001953125,4.440892098500626e-16 6,8.000000000000002 7,"
+      "0 3.0000000004656613,2 5,7 4,3 0,0 0,0 0,0 0,0 0,8 1.0000000000000002)))");
+  GeosReader geos;
+  oracle::ExactOptions twoUlps;  // new nodes where the answer's ring crosses itself, as above
+  twoUlps.constructionUlps = 2;
+  for (Op op : kAllOps) {
+    const Region r = clip(s, c, op);
+    EXPECT_TRUE(oracle::exactCheck(s, c, op, r).pass) << name(op);
+    for (io::Format format : {io::Format::Wkt, io::Format::GeoJson}) {
+      const std::string where = std::string(name(op)) + (format == io::Format::Wkt ? ", wkt" : ", geojson");
+      std::string text;
+      ASSERT_NO_THROW(text = io::write(r, format, io::Layout::Ogc)) << where;
+      const auto read = geos.read(text, format);
+      ASSERT_TRUE(read.parsed) << where;
+      EXPECT_TRUE(read.valid) << where;
+      EXPECT_TRUE(oracle::exactCheck(s, c, op, read.rings, twoUlps).pass) << where << ": GEOS reads area " << read.area;
+    }
+  }
+}
+
 // GEOS's own robustness case (libgeos/geos, tests/xmltester/tests/robust/overlay/
 // TestOverlay-misc-5.xml, case 1: two parcels near 5.4e6 with nearly coincident vertices): the
 // difference's rings cross, so GEOS nodes them, and its iterated floating noding drifts the new
