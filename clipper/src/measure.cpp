@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
+#include "ghclip/errors.h"
 #include "predicates/even_odd_ray.h"
 #include "predicates/segment_meeting.h"
 
@@ -34,6 +36,17 @@ bool properCrossingX(const Segment& s, const Segment& t, double& x) {
   return true;
 }
 
+// The exact predicates below fall back to GMP, which cannot hold NaN or infinity (it raises
+// SIGFPE): a non-finite coordinate is refused first.
+void requireFinite(Point p, const char* what) {
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw InvalidInput(std::string(what) + " has a non-finite coordinate");
+}
+void requireFinite(const Region& region, const char* what) {
+  for (const Ring& ring : region) {
+    for (const Point& p : ring) requireFinite(p, what);
+  }
+}
+
 }  // namespace
 
 double signedArea(const Ring& ring) {
@@ -53,6 +66,8 @@ std::size_t vertexCount(const Region& region) {
 }
 
 bool insideEvenOdd(const Region& region, Point p) {
+  requireFinite(p, "the point");
+  requireFinite(region, "the region");
   detail::ExactCounters counters;
   return detail::insideByRay(
       p,
@@ -65,6 +80,7 @@ bool insideEvenOdd(const Region& region, Point p) {
 }
 
 double evenOddArea(const Region& region) {
+  requireFinite(region, "the region");
   std::vector<Segment> segs;
   std::vector<double> xs;
   for (const Ring& ring : region) {

@@ -100,12 +100,15 @@ struct NotThisWay {
 // unit square turned by 30 degrees: the face was then taken for outside), so it is verified, and
 // else the centroid and the centroids of the shell's corners are tried. A face with no double
 // strictly inside is an ulp wide: either side of it is within the rounding the area check allows
-// (which catches a wide face taken wrongly), and GEOS's interior point decides. Empty only when
-// GEOS fails.
+// (which catches a wide face taken wrongly), and GEOS's interior point decides, or a corner's
+// centroid where GEOS's is not finite. Empty only when GEOS fails.
 std::optional<Point> decidingPoint(const Geos& g, const GEOSGeometry* face) {
+  // Only a finite point: GEOS gave a face at subnormal coordinates a point on its surface with x
+  // NaN (0/0), which no even-odd test can decide.
   auto pointOf = [&](const Geometry& point) -> std::optional<Point> {
     double x, y;
-    if (!point || GEOSGeomGetX_r(g.get(), point.get(), &x) != 1 || GEOSGeomGetY_r(g.get(), point.get(), &y) != 1) {
+    if (!point || GEOSGeomGetX_r(g.get(), point.get(), &x) != 1 || GEOSGeomGetY_r(g.get(), point.get(), &y) != 1 ||
+        !std::isfinite(x) || !std::isfinite(y)) {
       return std::nullopt;
     }
     return Point{x, y};
@@ -119,11 +122,21 @@ std::optional<Point> decidingPoint(const Geos& g, const GEOSGeometry* face) {
   if (onSurface && GEOSContains_r(g.get(), face, onSurface.get()) == 1) return pointOf(onSurface);
   if (auto p = strictlyInside(GEOSGetCentroid_r(g.get(), face))) return p;
   const Ring shell = ringOf(g, GEOSGetExteriorRing_r(g.get(), face));
-  for (std::size_t k = 0, n = shell.size(); k < n; ++k) {
+  // A corner's centroid, in thirds: the sum of three coordinates near 1e308 would overflow.
+  auto cornerCentroid = [&](std::size_t k) {
+    const std::size_t n = shell.size();
     const Point a = shell[(k + n - 1) % n], b = shell[k], c = shell[(k + 1) % n];
-    if (auto p = strictlyInside(GEOSGeom_createPointFromXY_r(g.get(), (a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3))) return p;
+    return Point{a.x / 3 + b.x / 3 + c.x / 3, a.y / 3 + b.y / 3 + c.y / 3};
+  };
+  for (std::size_t k = 0; k < shell.size(); ++k) {
+    const Point p = cornerCentroid(k);
+    if (auto inside = strictlyInside(GEOSGeom_createPointFromXY_r(g.get(), p.x, p.y))) return inside;
   }
-  return pointOf(onSurface);
+  if (auto p = pointOf(onSurface)) return p;
+  // No finite point strictly inside, and none from GEOS: the face is an ulp wide, so either side
+  // will do (see above); a corner's centroid is one.
+  if (!shell.empty()) return cornerCentroid(0);
+  return std::nullopt;
 }
 
 // The rings' linework noded, every face of it whose inside point is inside the region by the

@@ -6,6 +6,7 @@
 
 #include "common/hand_cases.h"
 #include "ghclip/clip.h"
+#include "ghclip/errors.h"
 #include "ghclip/measure.h"
 #include "ghoracle/exact_oracle.h"
 
@@ -68,6 +69,20 @@ TEST(Measure, EvenOddAreaStaysFiniteWhereDeterminantsCancel) {
   const double area = evenOddArea(r);
   ASSERT_TRUE(std::isfinite(area));
   EXPECT_NEAR(area, v.expectedArea, 1e-9 * v.expectedArea);
+}
+
+// GMP, behind the exact predicates, raises SIGFPE on NaN and infinity: refused with a message.
+TEST(Measure, NonFiniteCoordinatesAreRefused) {
+  const Region square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  for (double bad : {std::nan(""), double{INFINITY}, -double{INFINITY}}) {
+    const Region broken{{{0, 0}, {bad, 0}, {1, 1}, {0, 1}}};
+    EXPECT_THROW(evenOddArea(broken), InvalidInput);
+    EXPECT_THROW(insideEvenOdd(broken, {0.5, 0.5}), InvalidInput);
+    EXPECT_THROW(insideEvenOdd(square, {bad, 0.5}), InvalidInput);
+    EXPECT_THROW(insideEvenOdd(square, {0.5, bad}), InvalidInput);
+  }
+  EXPECT_TRUE(insideEvenOdd(square, {0.5, 0.5}));
+  EXPECT_EQ(evenOddArea(square), 1);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// Measurements of regions in floating point (the exact ones live in the oracles).
+// Measurements of regions in floating point (the exact ones live in the oracles). evenOddArea and
+// insideEvenOdd throw InvalidInput for a non-finite coordinate.
 #pragma once
 
 #include "ghclip/region.h"
