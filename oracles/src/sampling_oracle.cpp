@@ -31,7 +31,22 @@ struct Box {
       }
     }
   }
+  bool holds(Point p) const { return p.x >= minX && p.x <= maxX && p.y >= minY && p.y <= maxY; }
+  bool holds(const Box& b) const { return b.minX >= minX && b.maxX <= maxX && b.minY >= minY && b.maxY <= maxY; }
 };
+
+// count points drawn uniformly over a box (x, then y, from one generator seeded so), the finite
+// ones handed to f.
+template <class F>
+void forUniformPoints(const Box& box, std::uint64_t seed, std::size_t count, F&& f) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(box.minX, box.maxX), uy(box.minY, box.maxY);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double x = ux(rng);
+    const Point p{x, uy(rng)};
+    if (std::isfinite(p.x) && std::isfinite(p.y)) f(p);
+  }
+}
 
 // Whether |(b - a) x (p - a)| <= bound, i.e. p is within bound / |b - a| of the line ab: in
 // doubles when the rounding cannot matter, else in GMP (p near the origin and a, b at 1e144
@@ -742,17 +757,10 @@ class Sampler {
     }
     operandClearance_.resize(vertices);
     if (!(box.minX <= box.maxX)) return;  // everything empty: nothing to check
-    slack_ = slackOf(box);
     // Halves first: the extent of coordinates near 2^500 must not overflow.
     extent_ = std::max({(box.maxX / 2 - box.minX / 2) * 2, (box.maxY / 2 - box.minY / 2) * 2,
                         std::numeric_limits<double>::min()});
-    std::mt19937_64 rng(options.seed);
-    std::uniform_real_distribution<double> ux(box.minX, box.maxX), uy(box.minY, box.maxY);
-    for (std::size_t i = 0; i < options.uniformPoints; ++i) {
-      const double x = ux(rng);
-      const Point p{x, uy(rng)};
-      if (std::isfinite(p.x) && std::isfinite(p.y)) uniform_.push_back({p, sides(p)});
-    }
+    forUniformPoints(box, options.seed, options.uniformPoints, [&](Point p) { uniform_.push_back({p, sides(p)}); });
   }
 
   bool empty() const { return !(box_.minX <= box_.maxX); }
@@ -764,7 +772,7 @@ class Sampler {
     ++epoch_;
     Box reach = box_;  // S, C and the answer
     reach.grow(result);
-    const double slack = std::max(slack_, slackOf(reach));
+    const double slack = slackOf(reach);
     const EvenOddRegion inR(result);
     // Whether p was judged (not skipped). side: the answer's side at p when already known (from
     // the rays at a vertex, below), else null.
@@ -785,16 +793,10 @@ class Sampler {
     // An answer reaching beyond S and C's box (a wrong one, or the paper arithmetic's, whose
     // perturbation moves vertices) is sampled there too: of as many points drawn uniformly over the
     // box of S, C and the answer, those that land outside S and C's box.
-    if (reach.minX < box_.minX || reach.maxX > box_.maxX || reach.minY < box_.minY || reach.maxY > box_.maxY) {
-      std::mt19937_64 rng(mixBits(options_.seed ^ 0xB0C5B0C5B0C5B0C5ull));
-      std::uniform_real_distribution<double> ux(reach.minX, reach.maxX), uy(reach.minY, reach.maxY);
-      for (std::size_t i = 0; i < options_.uniformPoints; ++i) {
-        const double x = ux(rng);
-        const Point p{x, uy(rng)};
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-        if (p.x >= box_.minX && p.x <= box_.maxX && p.y >= box_.minY && p.y <= box_.maxY) continue;
-        judge(p, sides(p));
-      }
+    if (!box_.holds(reach)) {
+      forUniformPoints(reach, mixBits(options_.seed ^ 0xB0C5B0C5B0C5B0C5ull), options_.uniformPoints, [&](Point p) {
+        if (!box_.holds(p)) judge(p, sides(p));
+      });
     }
     if (options_.nearVertices) {
       const SegmentGrid answerGrid(result);
@@ -927,7 +929,6 @@ class Sampler {
   EvenOddRegion inS_, inC_;
   SegmentGrid operandGrid_;
   double extent_ = 0;
-  double slack_ = 0;  // a bound on the error of a distance, or of a point's rounding, in the box
   std::uint32_t epoch_ = 0;
   std::vector<std::pair<Point, std::uint8_t>> uniform_;
   PointTable<Known> known_;
