@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "findings.h"
 #include "fuzz_input.h"
@@ -27,9 +29,6 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
   const bool strict = variant == Variant::Exact;
   oracle::SampleOptions so;
   so.uniformPoints = 200;
-  // What the five answers share, done once (for valid input).
-  std::optional<oracle::InvariantJudge> invariants;
-  std::optional<oracle::SamplingJudge> judge;
   // Phases 1 and 2 once for the five operations (clipping.h: each answer is clip()'s, bit for bit).
   std::optional<Clipping> clipping;
   try {
@@ -43,33 +42,40 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
     }
     return 0;
   }
+  std::vector<std::pair<Op, Region>> answers;
   for (Op op : kAllOps) {
-    Region r;
     try {
-      r = clipping->result(op);
+      answers.emplace_back(op, clipping->result(op));
     } catch (const ClipFailure& e) {
       if (strict) trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
       record(target, std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op, data, size);
       continue;
     }
-    for (const Ring& ring : r) {
+    for (const Ring& ring : answers.back().second) {
       for (const Point& q : ring) {
         if (!std::isfinite(q.x) || !std::isfinite(q.y)) trap("non-finite output", p.subject, p.clip, op);
       }
     }
-    const JudgeHeap heap;  // to the end of this operation's checks; the next clip runs outside it
-    if (!invariants) invariants.emplace(p.subject, p.clip);
-    const auto violations = invariants->violations(op, r);
+  }
+  if (answers.empty()) return 0;
+  const JudgeHeap heap;  // the clips above ran outside it
+  const oracle::InvariantJudge invariants(p.subject, p.clip);
+  for (const auto& [op, r] : answers) {
+    const auto violations = invariants.violations(op, r);
     if (!violations.empty()) {
       if (strict) trap("invariant: " + violations.front(), p.subject, p.clip, op);
       record(target, "invariant: " + violations.front(), p.subject, p.clip, op, data, size);
     }
-    if (!judge) judge.emplace(p.subject, p.clip, so);
-    const auto v = judge->check(op, r);
-    if (!v.pass()) {
-      if (strict) trap("sampling oracle disagrees", p.subject, p.clip, op);
-      record(target, "sampling oracle disagrees", p.subject, p.clip, op, data, size);
-    }
+  }
+  // The five answers at once: each at every point a check of it alone would judge, or at one in
+  // the same face, and at the points of the others (sampling_oracle.h).
+  std::vector<std::pair<Op, const Region*>> judged;
+  for (const auto& [op, r] : answers) judged.emplace_back(op, &r);
+  const auto verdicts = oracle::SamplingJudge(p.subject, p.clip, so).check(judged);
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    if (verdicts[i].pass()) continue;
+    if (strict) trap("sampling oracle disagrees", p.subject, p.clip, answers[i].first);
+    record(target, "sampling oracle disagrees", p.subject, p.clip, answers[i].first, data, size);
   }
   return 0;
 }

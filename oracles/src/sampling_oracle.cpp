@@ -9,6 +9,7 @@
 #include <limits>
 #include <functional>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "exact_orientation.h"
@@ -408,9 +409,12 @@ class SegmentGrid {
   // once, complete whenever the clearance is not 0; with `strict`, the clearance with no
   // segment counted as passing through q by passesNear (never more than the one returned); with
   // `nearest`, the segments near q and the clearance of all the others (Nearest).
-  template <class PassesNear>
+  // onStrict(i, d), when given, sees every segment i the walk reaches and its distance d from q:
+  // a segment it does not reach lies farther from q than the clearance returned.
+  template <class PassesNear, class OnStrict = void (*)(std::uint32_t, double)>
   double clearance(Point q, double cap, PassesNear&& passesNear, std::vector<std::uint32_t>* atQ = nullptr,
-                   double* strict = nullptr, Nearest* nearest = nullptr) const {
+                   double* strict = nullptr, Nearest* nearest = nullptr,
+                   OnStrict&& onStrict = [](std::uint32_t, double) {}) const {
     double least = cap, strictLeast = cap;
     if (atQ) atQ->clear();
     if (strict) *strict = cap;
@@ -446,6 +450,7 @@ class SegmentGrid {
         const bool passes = d.interior && d.line < least && passesNear(box.segment, d.line);
         least = std::min(least, passes ? endDistance(q, s) : d.line);
         strictLeast = std::min(strictLeast, d.line);
+        onStrict(box.segment, d.line);
         if (atQ && d.atQ) atQ->push_back(box.segment);
         if (nearest) {
           // A segment through q, or counted so, bounds the clearance by its ends; another (even
@@ -731,6 +736,113 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
   }
 }
 
+// The corners sampled so far in a check: a vertex with its two neighbours, in either order (the
+// points around a corner do not depend on which neighbour comes first: aroundVertex). Open
+// addressing over one array, emptied for each check.
+class CornerSet {
+ public:
+  void clear() {
+    std::fill(slots_.begin(), slots_.end(), Corner{});
+    size_ = 0;
+  }
+  // Whether the corner is new; it counts as sampled from now on.
+  bool add(Point prev, Point q, Point next) {
+    if (next.x < prev.x || (next.x == prev.x && next.y < prev.y)) std::swap(prev, next);
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    const Corner c{q, prev, next};
+    for (std::size_t i = home(c);; i = (i + 1) & (slots_.size() - 1)) {
+      if (emptySlot(slots_[i])) {
+        slots_[i] = c, ++size_;
+        return true;
+      }
+      if (slots_[i].q == q && slots_[i].a == prev && slots_[i].b == next) return false;
+    }
+  }
+
+ private:
+  struct Corner {
+    Point q{std::numeric_limits<double>::quiet_NaN(), 0}, a{}, b{};
+  };
+  static bool emptySlot(const Corner& c) { return c.q.x != c.q.x; }
+  std::size_t home(const Corner& c) const {
+    std::uint64_t h = PointTable<char>::hash(c.q);
+    h = mixBits(h + PointTable<char>::hash(c.a));
+    h = mixBits(h + PointTable<char>::hash(c.b));
+    return static_cast<std::size_t>(h) & (slots_.size() - 1);
+  }
+  void grow() {
+    std::vector<Corner> old = std::move(slots_);
+    slots_.assign(old.empty() ? 256 : 2 * old.size(), Corner{});
+    size_ = 0;
+    for (const Corner& c : old) {
+      if (!emptySlot(c)) add(c.a, c.q, c.b);
+    }
+  }
+  std::vector<Corner> slots_;
+  std::size_t size_ = 0;
+};
+
+// One answer to judge, among several for the same S and C.
+struct SampleAnswer {
+  Op op;
+  const Region& result;
+};
+
+// The edges of several answers, each distinct segment (in either direction) once in one grid,
+// with the answers it is an edge of (an answer once per edge of it there): the exact variant's
+// five answers share most of their edges.
+class AnswerSegments {
+  std::vector<std::uint32_t> start_, answers_;  // answers_[start_[e] .. start_[e + 1]): segment e's;
+                                                // made by distinct(), so declared before the grid
+
+ public:
+  explicit AnswerSegments(const std::vector<SampleAnswer>& answers) : grid(distinct(answers)) {}
+
+  struct Answers {
+    const std::uint32_t *first, *last;
+    const std::uint32_t* begin() const { return first; }
+    const std::uint32_t* end() const { return last; }
+  };
+  // The answers segment e of the grid is an edge of, one entry per edge.
+  Answers answersOf(std::uint32_t e) const { return {answers_.data() + start_[e], answers_.data() + start_[e + 1]}; }
+
+  const SegmentGrid grid;
+
+ private:
+  std::vector<std::pair<Point, Point>> distinct(const std::vector<SampleAnswer>& answers) {
+    struct Edge {
+      Point a, b;  // a before b (by x, then y)
+      std::uint32_t answer;
+    };
+    std::vector<Edge> edges;
+    for (std::uint32_t k = 0; k < answers.size(); ++k) {
+      for (const Ring& ring : answers[k].result) {
+        for (std::size_t i = 0, m = ring.size(); i < m; ++i) {
+          Point a = ring[i], b = ring[(i + 1) % m];
+          if (b.x < a.x || (b.x == a.x && b.y < a.y)) std::swap(a, b);
+          edges.push_back({a, b, k});
+        }
+      }
+    }
+    auto key = [](const Edge& e) { return std::make_tuple(e.a.x, e.a.y, e.b.x, e.b.y); };
+    std::sort(edges.begin(), edges.end(), [&](const Edge& e, const Edge& f) {
+      return key(e) < key(f) || (key(e) == key(f) && e.answer < f.answer);
+    });
+    std::vector<std::pair<Point, Point>> segments;
+    start_.push_back(0);
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      if (i > 0 && key(edges[i]) == key(edges[i - 1])) {
+        ++start_.back();
+      } else {
+        segments.push_back({edges[i].a, edges[i].b});
+        start_.push_back(start_.back() + 1);
+      }
+      answers_.push_back(edges[i].answer);
+    }
+    return segments;
+  }
+};
+
 // A bound on the error of a distance, or of a point's rounding, in a box.
 double slackOf(const Box& box) {
   return 32 * ulpOf(std::max({std::abs(box.minX), std::abs(box.maxX), std::abs(box.minY), std::abs(box.maxY)}));
@@ -765,53 +877,66 @@ class Sampler {
 
   bool empty() const { return !(box_.minX <= box_.maxX); }
 
-  SampleVerdict check(Op op, const Region& result) {
+  // Several answers judged at once, at the points of all of them: the uniform points, and the
+  // points around every vertex of S, C and each answer. Around a vertex the radii sampled follow
+  // its clearance from the edges of S, C and every answer, and each distinct corner (a vertex and
+  // its two neighbours) is sampled once. So each answer is judged at every point a check of it
+  // alone judges, or at a point of the same face of the arrangement of S, C and all the answers
+  // (which has the same sides: aroundVertex), and at more; each point's sides of S and C are
+  // decided once, and its side of each answer once per check.
+  std::vector<SampleVerdict> check(const std::vector<SampleAnswer>& answers) {
     const auto start = std::chrono::steady_clock::now();
-    SampleVerdict v;
-    if (empty()) return v;
+    const std::size_t n = answers.size();
+    std::vector<SampleVerdict> verdicts(n);
+    if (empty() || n == 0) return verdicts;
     ++epoch_;
-    Box reach = box_;  // S, C and the answer
-    reach.grow(result);
-    const double slack = slackOf(reach);
-    const EvenOddRegion inR(result);
-    // Whether p was judged (not skipped). side: the answer's side at p when already known (from
-    // the rays at a vertex, below), else null.
-    auto judge = [&](Point p, std::uint8_t state, const std::optional<bool>* side = nullptr) {
-      const auto r = (state & kSkipped) ? std::nullopt : side ? *side : inR.inside(p);
-      if (!r) {
-        ++v.skipped;
-        return false;
-      }
-      ++v.checked;
-      if (*r != apply(op, (state & kInS) != 0, (state & kInC) != 0)) {
-        if (!v.mismatched) v.firstMismatch = p;
-        ++v.mismatched;
-      }
-      return true;
+    std::vector<EvenOddRegion> inR;
+    std::vector<Box> reach(n, box_);  // S, C and each answer
+    std::vector<double> slack(n);
+    inR.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      reach[i].grow(answers[i].result);
+      slack[i] = slackOf(reach[i]);
+      inR.emplace_back(answers[i].result);
+    }
+    auto sideOf = [&](std::size_t i, Point p, std::uint8_t state) {
+      return (state & kSkipped) ? std::nullopt : inR[i].inside(p);
     };
-    for (const auto& [p, state] : uniform_) judge(p, state);
+    for (const auto& [p, state] : uniform_) {
+      for (std::size_t i = 0; i < n; ++i) judge(verdicts[i], answers[i].op, p, state, sideOf(i, p, state));
+    }
     // An answer reaching beyond S and C's box (a wrong one, or the paper arithmetic's, whose
     // perturbation moves vertices) is sampled there too: of as many points drawn uniformly over the
     // box of S, C and the answer, those that land outside S and C's box.
-    if (!box_.holds(reach)) {
-      forUniformPoints(reach, mixBits(options_.seed ^ 0xB0C5B0C5B0C5B0C5ull), options_.uniformPoints, [&](Point p) {
-        if (!box_.holds(p)) judge(p, sides(p));
+    for (std::size_t i = 0; i < n; ++i) {
+      if (box_.holds(reach[i])) continue;
+      forUniformPoints(reach[i], mixBits(options_.seed ^ 0xB0C5B0C5B0C5B0C5ull), options_.uniformPoints, [&](Point p) {
+        if (box_.holds(p)) return;
+        const std::uint8_t state = sides(p);
+        judge(verdicts[i], answers[i].op, p, state, sideOf(i, p, state));
       });
     }
     if (options_.nearVertices) {
-      const SegmentGrid answerGrid(result);
-      // Whether p was judged (not skipped), now or earlier for this answer.
+      const AnswerSegments segments(answers);
+      const SegmentGrid& answerGrid = segments.grid;
+      rays_.resize(n);
+      strictByAnswer_.resize(n);
+      // Whether p was judged for every answer (not skipped), now or earlier in this check.
       auto probe = [&](Point p, double radius) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
         auto [known, fresh] = known_.findOrAdd(p);
         if (fresh) known.state = sides(p);  // sides() adds nothing to known_: the reference holds
-        if (known.epoch == epoch_) return known.judged;  // judged for this answer already
+        if (known.epoch == epoch_) return known.judged;  // judged in this check already
         known.epoch = epoch_;
-        if (!(known.state & kSkipped) && rays_.holds(p, radius)) {
-          const std::optional<bool> side = rays_.side(p, [&] { return inR.inside(p); });
-          return known.judged = judge(p, known.state, &side);
+        bool all = !(known.state & kSkipped);
+        for (std::size_t i = 0; i < n; ++i) {
+          std::optional<bool> side;
+          if (!(known.state & kSkipped)) {
+            side = rays_[i].holds(p, radius) ? rays_[i].side(p, [&] { return inR[i].inside(p); }) : inR[i].inside(p);
+          }
+          all &= judge(verdicts[i], answers[i].op, p, known.state, side);
         }
-        return known.judged = judge(p, known.state);
+        return known.judged = all;
       };
       // Whether one of the edges near the vertex sampled meets segment ft.
       auto separated = [&](Point f, Point t) {
@@ -821,87 +946,119 @@ class Sampler {
         return false;
       };
       const double delta = operandEdges_.largestCoarseDelta();
+      corners_.clear();
       std::size_t operandVertex = 0;  // an S or C vertex's place in operandClearance_
-      for (const Region* region : {&subject_, &clip_, &result}) {
-        for (const Ring& ring : *region) {
-          for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-            const Point q = ring[i];
-            CachedClearance* cached = region == &result ? nullptr : &operandClearance_[operandVertex++];
-            rays_.reset(q, -1);  // until the clearance below is known
-            // An edge of S or C that passes within a rounding of q (q a rounded crossing of
-            // it) counts as passing through q when the points computed near q are rounded far
-            // less than its delta (OperandEdges::passesNear): within the clearance they differ
-            // from the points farther out only where they are skipped. The answer's edges do
-            // only where they run along such an edge: elsewhere the points are not skipped near them.
-            // A point q + r * u (r < cap) is computed within half an ulp of m, plus 2^-53 r for
-            // the product, of the exact point on its ray, per coordinate: within sqrt(2) times
-            // that in all; this bound keeps another factor 1.4 in hand. (Twice as loose, it
-            // failed passesNear at so many rounded crossings that the fuzz corpus's exact
-            // answers had 42 % more points to judge.)
-            auto roundingBelow = [&](double cap) { return ulpOf(std::max(std::abs(q.x), std::abs(q.y)) + cap) + 0x1p-51 * cap; };
-            auto passesNear = [&](double rounding) {
-              return [&, rounding](std::size_t e, double d) { return operandEdges_.passesNear(e, q, d, rounding); };
+      auto visitRing = [&](const Ring& ring, bool operand) {
+        for (std::size_t i = 0, m = ring.size(); i < m; ++i) {
+          const Point q = ring[i], prev = ring[(i + m - 1) % m], next = ring[(i + 1) % m];
+          CachedClearance* cached = operand ? &operandClearance_[operandVertex++] : nullptr;
+          // A corner met before in this check is sampled at the same points (its clearance
+          // below is the same): they are judged already.
+          if (!corners_.add(prev, q, next)) continue;
+          for (RaysFrom& rays : rays_) rays.reset(q, -1);  // until the clearance below is known
+          // An edge of S or C that passes within a rounding of q (q a rounded crossing of
+          // it) counts as passing through q when the points computed near q are rounded far
+          // less than its delta (OperandEdges::passesNear): within the clearance they differ
+          // from the points farther out only where they are skipped. The answers' edges do
+          // only where they run along such an edge: elsewhere the points are not skipped near them.
+          // A point q + r * u (r < cap) is computed within half an ulp of m, plus 2^-53 r for
+          // the product, of the exact point on its ray, per coordinate: within sqrt(2) times
+          // that in all; this bound keeps another factor 1.4 in hand. (Twice as loose, it
+          // failed passesNear at so many rounded crossings that the fuzz corpus's exact
+          // answers had 42 % more points to judge.)
+          auto roundingBelow = [&](double cap) { return ulpOf(std::max(std::abs(q.x), std::abs(q.y)) + cap) + 0x1p-51 * cap; };
+          auto passesNear = [&](double rounding) {
+            return [&, rounding](std::size_t e, double d) { return operandEdges_.passesNear(e, q, d, rounding); };
+          };
+          // An answer's edge that runs along such an edge of S or C (a ring of the answer
+          // passing a rounded crossing that is a vertex of another ring) counts as passing
+          // through q too (OperandEdges::carries), for the radii; not for the rays below.
+          auto carried = [&](double rounding) {
+            return [&, rounding](std::size_t e, double d) {
+              return d <= delta && operandEdges_.carries(q, answerGrid.segment(e).first, answerGrid.segment(e).second, rounding);
             };
-            // An answer's edge that runs along such an edge of S or C (a ring of the answer
-            // passing a rounded crossing that is a vertex of another ring) counts as passing
-            // through q too (OperandEdges::carries), for the radii; not for the rays below.
-            auto carried = [&](double rounding) {
-              return [&, rounding](std::size_t e, double d) {
-                return d <= delta && operandEdges_.carries(q, answerGrid.segment(e).first, answerGrid.segment(e).second, rounding);
-              };
-            };
-            auto clearance = [&](double cap) {
-              const double rounding = roundingBelow(cap);
-              double strictAnswers = 0;
-              const double answers = answerGrid.clearance(q, cap, carried(rounding), &atQ_, &strictAnswers);
-              // Within this radius the answer's edges are the rays from q: short of the
-              // clearance by far more than the error of a distance in doubles or of a point's
-              // rounding (a few ulps of the box's magnitude).
-              rays_.reset(q, 0.49 * strictAnswers - slack);
-              for (std::uint32_t e : atQ_) {
-                rays_.add(answerGrid.segment(e).first);
-                rays_.add(answerGrid.segment(e).second);
+          };
+          auto clearance = [&](double cap) {
+            const double rounding = roundingBelow(cap);
+            std::fill(strictByAnswer_.begin(), strictByAnswer_.end(), cap);
+            const double answersClearance = answerGrid.clearance(q, cap, carried(rounding), &atQ_, nullptr, nullptr,
+                                                                 [&](std::uint32_t e, double d) {
+                                                                   for (std::uint32_t a : segments.answersOf(e)) {
+                                                                     strictByAnswer_[a] = std::min(strictByAnswer_[a], d);
+                                                                   }
+                                                                 });
+            // Within this radius each answer's edges are the rays from q: short of its clearance
+            // (a segment the walk did not reach lies farther than answersClearance) by far more
+            // than the error of a distance in doubles or of a point's rounding (a few ulps of the
+            // box's magnitude).
+            for (std::size_t a = 0; a < n; ++a) {
+              rays_[a].reset(q, 0.49 * std::min(strictByAnswer_[a], answersClearance) - slack[a]);
+            }
+            for (std::uint32_t e : atQ_) {
+              for (std::uint32_t a : segments.answersOf(e)) {
+                rays_[a].add(answerGrid.segment(e).first);
+                rays_[a].add(answerGrid.segment(e).second);
               }
-              // An S or C vertex's clearance from S and C is the same for every answer.
-              if (!cached) return std::min(operandGrid_.clearance(q, cap, passesNear(rounding)), answers);
-              if (cached->cap != cap) cached->cap = cap, cached->value = operandGrid_.clearance(q, cap, passesNear(rounding));
-              return std::min(cached->value, answers);
-            };
-            // The clearance without the edges near q, which it gathers in nearest_.
-            auto widerClearance = [&](double cap) {
-              const double rounding = roundingBelow(cap);
-              answerGrid.clearance(q, cap, carried(rounding), nullptr, nullptr, &nearScratch_);
-              const double answers = nearScratch_.beyond;
-              nearest_.clear();
-              for (std::uint32_t e : nearScratch_.segments) nearest_.push_back(answerGrid.segment(e));
-              NearOperands& operands = cached ? cached->wider : operandScratch_;
-              if (!cached || operands.cap != cap) {
-                operands.cap = cap;
-                operandGrid_.clearance(q, cap, passesNear(rounding), nullptr, nullptr, &nearScratch_);
-                operands.beyond = nearScratch_.beyond;
-                operands.edges.clear();
-                for (std::uint32_t e : nearScratch_.segments) operands.edges.push_back(operandGrid_.segment(e));
-              }
-              nearest_.insert(nearest_.end(), operands.edges.begin(), operands.edges.end());
-              return std::min(operands.beyond, answers);
-            };
-            aroundVertex(ring[(i + n - 1) % n], q, ring[(i + 1) % n], extent_, options_.seed, delta, clearance,
-                         widerClearance, probe, separated);
-          }
+            }
+            // An S or C vertex's clearance from S and C is the same for every answer.
+            if (!cached) return std::min(operandGrid_.clearance(q, cap, passesNear(rounding)), answersClearance);
+            if (cached->cap != cap) cached->cap = cap, cached->value = operandGrid_.clearance(q, cap, passesNear(rounding));
+            return std::min(cached->value, answersClearance);
+          };
+          // The clearance without the edges near q, which it gathers in nearest_.
+          auto widerClearance = [&](double cap) {
+            const double rounding = roundingBelow(cap);
+            answerGrid.clearance(q, cap, carried(rounding), nullptr, nullptr, &nearScratch_);
+            const double answersBeyond = nearScratch_.beyond;
+            nearest_.clear();
+            for (std::uint32_t e : nearScratch_.segments) nearest_.push_back(answerGrid.segment(e));
+            NearOperands& operands = cached ? cached->wider : operandScratch_;
+            if (!cached || operands.cap != cap) {
+              operands.cap = cap;
+              operandGrid_.clearance(q, cap, passesNear(rounding), nullptr, nullptr, &nearScratch_);
+              operands.beyond = nearScratch_.beyond;
+              operands.edges.clear();
+              for (std::uint32_t e : nearScratch_.segments) operands.edges.push_back(operandGrid_.segment(e));
+            }
+            nearest_.insert(nearest_.end(), operands.edges.begin(), operands.edges.end());
+            return std::min(operands.beyond, answersBeyond);
+          };
+          aroundVertex(prev, q, next, extent_, options_.seed, delta, clearance, widerClearance, probe, separated);
         }
+      };
+      for (const Region* region : {&subject_, &clip_}) {
+        for (const Ring& ring : *region) visitRing(ring, true);
+      }
+      for (const SampleAnswer& answer : answers) {
+        for (const Ring& ring : answer.result) visitRing(ring, false);
       }
     }
-    v.delta = operandEdges_.largestDelta();
-    v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return v;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (SampleVerdict& v : verdicts) v.delta = operandEdges_.largestDelta(), v.seconds = seconds;
+    return verdicts;
   }
 
  private:
+  // Counts the point in v: skipped when it is within a delta of S or C (state) or on the answer's
+  // boundary (no side); else checked, and a mismatch when the side is not op's. Whether judged.
+  static bool judge(SampleVerdict& v, Op op, Point p, std::uint8_t state, const std::optional<bool>& side) {
+    if ((state & kSkipped) || !side) {
+      ++v.skipped;
+      return false;
+    }
+    ++v.checked;
+    if (*side != apply(op, (state & kInS) != 0, (state & kInC) != 0)) {
+      if (!v.mismatched) v.firstMismatch = p;
+      ++v.mismatched;
+    }
+    return true;
+  }
+
   static constexpr std::uint8_t kInS = 1, kInC = 2, kSkipped = 4;
   struct Known {
-    std::uint32_t epoch = 0;  // the last answer it was judged against
+    std::uint32_t epoch = 0;  // the last check it was judged in
     std::uint8_t state = 0;
-    bool judged = false;      // by that answer (not skipped)
+    bool judged = false;      // for every answer of that check (not skipped)
   };
 
   // kSkipped when p is within the delta of an edge of S or C, or on one; else its sides.
@@ -937,7 +1094,9 @@ class Sampler {
   std::vector<std::pair<Point, Point>> nearest_;   // scratch: the edges near a vertex (S, C, answer)
   SegmentGrid::Nearest nearScratch_;               // scratch
   NearOperands operandScratch_;                    // scratch: an answer vertex's wider clearance from S and C
-  RaysFrom rays_;                                  // the answer's edges near the vertex sampled
+  std::vector<RaysFrom> rays_;                     // each answer's edges near the vertex sampled
+  std::vector<double> strictByAnswer_;             // scratch: each answer's clearance from the vertex
+  CornerSet corners_;                              // the corners sampled in this check
 };
 
 Box boxOf(std::initializer_list<const Region*> regions) {
@@ -958,11 +1117,11 @@ SampleVerdict sampleCheck(const Region& subject, const Region& clip, Op op, cons
                           const SampleOptions& options) {
   const double denormMin = std::numeric_limits<double>::denorm_min();
   const int k = judgingExponent(subject, clip, result);
-  if (k == 0) return Sampler(subject, clip, operandBox(subject, clip, result), options, denormMin).check(op, result);
+  if (k == 0) return Sampler(subject, clip, operandBox(subject, clip, result), options, denormMin).check({{op, result}})[0];
   // Scaled from subnormal coordinates, the original's rounding grid becomes coarse there: its
   // smallest ulp, denorm_min, is 2^k * denorm_min at this scale.
   const Region s = scaledBy(subject, k), c = scaledBy(clip, k), r = scaledBy(result, k);
-  SampleVerdict v = Sampler(s, c, operandBox(s, c, r), options, std::ldexp(denormMin, std::max(k, 0))).check(op, r);
+  SampleVerdict v = Sampler(s, c, operandBox(s, c, r), options, std::ldexp(denormMin, std::max(k, 0))).check({{op, r}})[0];
   v.delta = std::ldexp(v.delta, -k);
   if (v.firstMismatch) v.firstMismatch = scaledBy(*v.firstMismatch, -k);
   return v;
@@ -989,18 +1148,39 @@ SamplingJudge::SamplingJudge(const Region& subject, const Region& clip, const Sa
 
 SamplingJudge::~SamplingJudge() = default;
 
-SampleVerdict SamplingJudge::check(Op op, const Region& result) {
+SampleVerdict SamplingJudge::check(Op op, const Region& result) { return check({{op, &result}})[0]; }
+
+std::vector<SampleVerdict> SamplingJudge::check(const std::vector<std::pair<Op, const Region*>>& answers) {
   Shared& sh = *shared_;
+  std::vector<SampleVerdict> verdicts(answers.size());
   // An answer that changes the judging scale (only a wrong one can), or one beside empty S and C
-  // (sampled over its own box), is judged on its own.
-  if (judgingExponent(sh.subject, sh.clip, result) != sh.k) return sampleCheck(sh.subject, sh.clip, op, result, options_);
-  if (sh.sampler->empty() && !result.empty()) return sampleCheck(sh.subject, sh.clip, op, result, options_);
-  const Region scaled = sh.k == 0 ? Region() : scaledBy(result, sh.k);
-  const Region& r = sh.k == 0 ? result : scaled;
-  SampleVerdict v = sh.sampler->check(op, r);
-  v.delta = std::ldexp(v.delta, -sh.k);
-  if (v.firstMismatch) v.firstMismatch = scaledBy(*v.firstMismatch, -sh.k);
-  return v;
+  // (sampled over its own box), is judged on its own; the others together, at S and C's scale.
+  std::vector<std::size_t> together;
+  std::vector<Region> scaled;
+  scaled.reserve(answers.size());  // SampleAnswer holds references into it
+  std::vector<SampleAnswer> joint;
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    const auto& [op, result] = answers[i];
+    if (judgingExponent(sh.subject, sh.clip, *result) != sh.k || (sh.sampler->empty() && !result->empty())) {
+      verdicts[i] = sampleCheck(sh.subject, sh.clip, op, *result, options_);
+      continue;
+    }
+    together.push_back(i);
+    if (sh.k == 0) {
+      joint.push_back({op, *result});
+    } else {
+      scaled.push_back(scaledBy(*result, sh.k));
+      joint.push_back({op, scaled.back()});
+    }
+  }
+  std::vector<SampleVerdict> judged = sh.sampler->check(joint);
+  for (std::size_t j = 0; j < together.size(); ++j) {
+    SampleVerdict& v = verdicts[together[j]];
+    v = judged[j];
+    v.delta = std::ldexp(v.delta, -sh.k);
+    if (v.firstMismatch) v.firstMismatch = scaledBy(*v.firstMismatch, -sh.k);
+  }
+  return verdicts;
 }
 
 }  // namespace gh::oracle

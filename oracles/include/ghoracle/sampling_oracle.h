@@ -29,6 +29,8 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "ghclip/operation.h"
 #include "ghclip/region.h"
@@ -67,6 +69,12 @@ class SamplingJudge {
   SamplingJudge(const SamplingJudge&) = delete;
   SamplingJudge& operator=(const SamplingJudge&) = delete;
   SampleVerdict check(Op op, const Region& result);
+  // Several answers (op, answer) at once: each is judged at every point check(op, answer) judges,
+  // or at a point of the same face of the arrangement of S, C and all these answers, and also at
+  // the points of the others (around their vertices too), with each point's sides of S and C, and
+  // the clearances around each vertex, found once for all. So a mismatch check() finds is found
+  // here too, and more may be; the fuzz targets judge their five answers so.
+  std::vector<SampleVerdict> check(const std::vector<std::pair<Op, const Region*>>& answers);
 
  private:
   struct Shared;
