@@ -409,12 +409,13 @@ class SegmentGrid {
   // once, complete whenever the clearance is not 0; with `strict`, the clearance with no
   // segment counted as passing through q by passesNear (never more than the one returned); with
   // `nearest`, the segments near q and the clearance of all the others (Nearest).
-  // onStrict(i, d), when given, sees every segment i the walk reaches and its distance d from q:
-  // a segment it does not reach lies farther from q than the clearance returned.
-  template <class PassesNear, class OnStrict = void (*)(std::uint32_t, double)>
+  // onSegment(i, d, through), when given, sees every segment i the walk reaches, its distance d
+  // from q, and whether it passes through q or is counted so: a segment the walk does not reach
+  // lies farther from q than the clearance returned.
+  template <class PassesNear, class OnSegment = void (*)(std::uint32_t, double, bool)>
   double clearance(Point q, double cap, PassesNear&& passesNear, std::vector<std::uint32_t>* atQ = nullptr,
                    double* strict = nullptr, Nearest* nearest = nullptr,
-                   OnStrict&& onStrict = [](std::uint32_t, double) {}) const {
+                   OnSegment&& onSegment = [](std::uint32_t, double, bool) {}) const {
     double least = cap, strictLeast = cap;
     if (atQ) atQ->clear();
     if (strict) *strict = cap;
@@ -450,7 +451,7 @@ class SegmentGrid {
         const bool passes = d.interior && d.line < least && passesNear(box.segment, d.line);
         least = std::min(least, passes ? endDistance(q, s) : d.line);
         strictLeast = std::min(strictLeast, d.line);
-        onStrict(box.segment, d.line);
+        onSegment(box.segment, d.line, passes || d.atQ);
         if (atQ && d.atQ) atQ->push_back(box.segment);
         if (nearest) {
           // A segment through q, or counted so, bounds the clearance by its ends; another (even
@@ -667,9 +668,17 @@ class RaysFrom {
 // c lies below every radius) from costing 80 points. (Asked only where all eight radii are to be
 // sampled: on the fuzz corpora, asked wherever three or more were, finding c' cost more than the
 // points it saved.)
+//
+// At that largest radius below c/2 the points are one per sector of the disk: `fan` (filled by
+// clearanceBelow) holds the far ends of the edges through q or counted so (the rays that alone
+// cut the disk), and a point is judged at the angular middle of each sector between consecutive
+// rays (so a thin sector the eight directions miss is judged too); a point of the eight
+// directions and the bisector is judged only where no middle point was judged in its sector
+// (decided exactly: the rays before its direction), as it lies in one face with that one.
 template <class Clearance, class WiderClearance, class Visit, class Separated>
 void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t seed, double delta,
-                  Clearance&& clearanceBelow, WiderClearance&& widerClearance, Visit&& visit, Separated&& separated) {
+                  Clearance&& clearanceBelow, WiderClearance&& widerClearance, Visit&& visit, Separated&& separated,
+                  const std::vector<Point>& fan) {
   const double pi = std::acos(-1.0);
   // The vertex's own scale: its shorter non-zero edge.
   double local = std::numeric_limits<double>::infinity();
@@ -731,8 +740,60 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
       at(9, Point{q.x - radius * bx, q.y - radius * by}, radius);
     }
   };
+  // Where a direction lies among the fan's rays: how many come before it (by half-plane from the
+  // positive x axis, then by orientation), modulo their number; none on a ray.
+  auto half = [&](Point p) { return p.y > q.y || (p.y == q.y && p.x > q.x) ? 0 : 1; };
+  auto sectorOf = [&](Point p) -> std::optional<std::size_t> {
+    const int h = half(p);
+    std::size_t before = 0;
+    for (const Point& end : fan) {
+      const int endHalf = half(end);
+      if (endHalf != h) {
+        before += endHalf < h;
+        continue;
+      }
+      const int o = orientation(q, end, p);
+      if (o == 0) return std::nullopt;
+      before += o > 0;
+    }
+    return fan.empty() ? 0 : before % fan.size();
+  };
+  auto aroundSectors = [&](double radius) {
+    double angles[64];
+    std::size_t rays = 0;
+    for (const Point& end : fan) {
+      if (rays == 64) break;  // a vertex of many edges: the directions below still cover it
+      angles[rays++] = std::atan2(end.y / 2 - q.y / 2, end.x / 2 - q.x / 2);
+    }
+    std::sort(angles, angles + rays);
+    rays = static_cast<std::size_t>(std::unique(angles, angles + rays) - angles);
+    std::size_t covered[64];
+    std::size_t judged = 0;
+    for (std::size_t k = 0; k < std::max<std::size_t>(rays, 1); ++k) {
+      const double from = rays ? angles[k] : phase, to = rays ? (k + 1 < rays ? angles[k + 1] : angles[0] + 2 * pi) : phase + 2 * pi;
+      if (!(to > from)) continue;
+      const double middle = from / 2 + to / 2;
+      const Point p{q.x + radius * std::cos(middle), q.y + radius * std::sin(middle)};
+      if (!visit(p, radius)) continue;
+      if (const auto sector = sectorOf(p)) covered[judged++] = *sector;
+    }
+    auto fixed = [&](int k, Point p) {
+      const auto sector = sectorOf(p);
+      if (sector && std::find(covered, covered + judged, *sector) != covered + judged) return;
+      at(k, p, radius);
+    };
+    for (int k = 0; k < 8; ++k) fixed(k, Point{q.x + radius * cosines[k], q.y + radius * sines[k]});
+    if (bx != 0 || by != 0) {
+      fixed(8, Point{q.x + radius * bx, q.y + radius * by});
+      fixed(9, Point{q.x - radius * bx, q.y - radius * by});
+    }
+  };
   for (int i = 0; i < count; ++i) {
-    if (kept < 0 || radii[i] > limit || radii[i] == kept) around(radii[i]);
+    if (kept < 0 || radii[i] > limit) {
+      around(radii[i]);
+    } else if (radii[i] == kept) {
+      aroundSectors(radii[i]);
+    }
   }
 }
 
@@ -978,14 +1039,21 @@ class Sampler {
               return d <= delta && operandEdges_.carries(q, answerGrid.segment(e).first, answerGrid.segment(e).second, rounding);
             };
           };
+          auto addToFan = [&](const std::pair<Point, Point>& segment) {
+            for (const Point& end : {segment.first, segment.second}) {
+              if (end != q) fan_.push_back(end);
+            }
+          };
           auto clearance = [&](double cap) {
             const double rounding = roundingBelow(cap);
+            fan_.clear();
             std::fill(strictByAnswer_.begin(), strictByAnswer_.end(), cap);
             const double answersClearance = answerGrid.clearance(q, cap, carried(rounding), &atQ_, nullptr, nullptr,
-                                                                 [&](std::uint32_t e, double d) {
+                                                                 [&](std::uint32_t e, double d, bool through) {
                                                                    for (std::uint32_t a : segments.answersOf(e)) {
                                                                      strictByAnswer_[a] = std::min(strictByAnswer_[a], d);
                                                                    }
+                                                                   if (through) addToFan(answerGrid.segment(e));
                                                                  });
             // Within this radius each answer's edges are the rays from q: short of its clearance
             // (a segment the walk did not reach lies farther than answersClearance) by far more
@@ -1000,9 +1068,23 @@ class Sampler {
                 rays_[a].add(answerGrid.segment(e).second);
               }
             }
-            // An S or C vertex's clearance from S and C is the same for every answer.
-            if (!cached) return std::min(operandGrid_.clearance(q, cap, passesNear(rounding)), answersClearance);
-            if (cached->cap != cap) cached->cap = cap, cached->value = operandGrid_.clearance(q, cap, passesNear(rounding));
+            // An S or C vertex's clearance from S and C (and the edges through it) is the same for
+            // every answer.
+            if (!cached) {
+              return std::min(operandGrid_.clearance(q, cap, passesNear(rounding), nullptr, nullptr, nullptr,
+                                                     [&](std::uint32_t e, double, bool through) {
+                                                       if (through) addToFan(operandGrid_.segment(e));
+                                                     }),
+                              answersClearance);
+            }
+            if (cached->cap != cap) {
+              cached->cap = cap, cached->through.clear();
+              cached->value = operandGrid_.clearance(q, cap, passesNear(rounding), nullptr, nullptr, nullptr,
+                                                     [&](std::uint32_t e, double, bool through) {
+                                                       if (through) cached->through.push_back(e);
+                                                     });
+            }
+            for (std::uint32_t e : cached->through) addToFan(operandGrid_.segment(e));
             return std::min(cached->value, answersClearance);
           };
           // The clearance without the edges near q, which it gathers in nearest_.
@@ -1023,7 +1105,7 @@ class Sampler {
             nearest_.insert(nearest_.end(), operands.edges.begin(), operands.edges.end());
             return std::min(operands.beyond, answersBeyond);
           };
-          aroundVertex(prev, q, next, extent_, options_.seed, delta, clearance, widerClearance, probe, separated);
+          aroundVertex(prev, q, next, extent_, options_.seed, delta, clearance, widerClearance, probe, separated, fan_);
         }
       };
       for (const Region* region : {&subject_, &clip_}) {
@@ -1074,7 +1156,8 @@ class Sampler {
     std::vector<std::pair<Point, Point>> edges;  // the edges it leaves out
   };
   struct CachedClearance {
-    double cap = -1, value = 0;  // clearanceBelow(cap) from S and C's edges
+    double cap = -1, value = 0;           // clearanceBelow(cap) from S and C's edges
+    std::vector<std::uint32_t> through;  // those through the vertex or counted so
     NearOperands wider;
   };
 
@@ -1097,6 +1180,7 @@ class Sampler {
   std::vector<RaysFrom> rays_;                     // each answer's edges near the vertex sampled
   std::vector<double> strictByAnswer_;             // scratch: each answer's clearance from the vertex
   CornerSet corners_;                              // the corners sampled in this check
+  std::vector<Point> fan_;                         // scratch: the far ends of the edges through a vertex
 };
 
 Box boxOf(std::initializer_list<const Region*> regions) {

@@ -550,5 +550,34 @@ TEST(SamplingOracle, PointsLeftOutNearAVertexLieInOneFaceWithAJudgedOne) {
   EXPECT_TRUE(oracle::sampleCheck(s, c, Op::ReverseDifference, clip(s, c, Op::ReverseDifference), options).pass());
 }
 
+// Two triangles sharing a vertex (a fuzz input): the paper arithmetic's answers for three
+// operations (of five) are wrong beyond rounding (the exact oracle), and the only points that
+// show it lie in a sector around a vertex that none of the eight directions or the bisector falls
+// in. Judged with every sector's middle point, those three fail; the exact variant's answers pass.
+TEST(SamplingOracle, EverySectorAroundAVertexIsJudged) {
+  const Region s = io::readWkt("POLYGON((0 3,3 6,1 0,0 3))");
+  const Region c = io::readWkt("POLYGON((0 3,6 1,7 3,0 3))");
+  oracle::SampleOptions options;
+  options.uniformPoints = 200;  // as the clip fuzz targets judge
+  for (Variant variant : {Variant::Naive, Variant::Exact}) {
+    std::vector<std::pair<Op, Region>> answers;
+    for (Op op : kAllOps) answers.emplace_back(op, clip(s, c, op, optionsOf(variant)));
+    std::vector<std::pair<Op, const Region*>> all;
+    for (const auto& [op, r] : answers) all.emplace_back(op, &r);
+    const auto verdicts = oracle::SamplingJudge(s, c, options).check(all);
+    for (std::size_t i = 0; i < answers.size(); ++i) {
+      const Op op = answers[i].first;
+      const bool exact = oracle::exactCheck(s, c, op, answers[i].second).pass;
+      if (variant == Variant::Exact) {
+        EXPECT_TRUE(exact) << name(op);
+        EXPECT_TRUE(verdicts[i].pass()) << name(op);
+      } else if (op == Op::ReverseDifference || op == Op::Union || op == Op::Xor) {
+        EXPECT_FALSE(exact) << name(op);
+        EXPECT_FALSE(verdicts[i].pass()) << name(op);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gh

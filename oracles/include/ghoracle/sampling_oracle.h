@@ -13,7 +13,9 @@
 // exact order of their directions among the rays the rest. Points that cannot change a verdict
 // are left out: around a vertex, the smaller radii inside its clearance, and a point that the
 // segment from a point judged farther out in its direction joins without meeting an edge (one
-// face).
+// face). At the one radius kept inside the clearance, where only the edges through the vertex
+// cut, every sector between them is judged at its angular middle (a thin sector no direction
+// falls in included), and a direction's point only where its sector's middle was not judged.
 //
 // Where a correct answer may legitimately disagree: within the rounding zones (exact_oracle.h),
 // which lie along the lines of S and C. A point is skipped when it is within
