@@ -658,7 +658,10 @@ class RaysFrom {
 // of radius c/2 only q's own edges cut, all as rays from q, so the points in one direction at two
 // radii below c/2 lie in the same sector: the same side of S, C and the answer, and the outer one
 // is no nearer an edge (the inner is skipped whenever the outer is, as long as c/2 exceeds every
-// edge's delta, `delta`). Of the radii below c/2, only the largest is sampled.
+// edge's delta, `delta`). Of the radii below c/2, only the largest is sampled; of those above,
+// only the smallest (the larger reach the neighbourhoods of other vertices, sampled at those:
+// on 1,644 seed, regression and grown fuzz inputs the naive answers they alone found wrong were
+// none, while they cost 7 % of the exact target's instructions).
 // widerClearance(cap), called at most once, after it, gives c': no edge comes within c' of q but
 // the edges near q, those through q and a few others. Inside the disk of radius c'/2, a point is
 // left out when the segment from the last point judged in its direction (farther out, inside that
@@ -723,8 +726,13 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
       if (radii[i] <= limit) kept = std::max(kept, radii[i]);
     }
   }
-  int sampled = 0;
-  for (int i = 0; i < count; ++i) sampled += kept < 0 || radii[i] > limit || radii[i] == kept;
+  // Beside the kept radius (its sectors), only the smallest radius above the limit: the larger
+  // ones reach the neighbourhoods of other vertices, sampled at those (radii sorted outer first).
+  double above = -1;
+  for (int i = 0; i < count; ++i) {
+    if (radii[i] > limit) above = radii[i];
+  }
+  const int sampled = kept < 0 ? count : 1 + (above > 0);
   const double wider = sampled == 8 ? 0.49 * widerClearance(2.5 * largest) : 0.0;
   Point outer[10];  // per direction, the last point judged inside the wider disk
   bool hasOuter[10] = {};
@@ -789,7 +797,7 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
     }
   };
   for (int i = 0; i < count; ++i) {
-    if (kept < 0 || radii[i] > limit) {
+    if (kept < 0 || radii[i] == above) {
       around(radii[i]);
     } else if (radii[i] == kept) {
       aroundSectors(radii[i]);
