@@ -39,6 +39,32 @@ class IntegerOrientation {
   IntegerOrientation& operator=(const IntegerOrientation&) = delete;
 
   int sign(Point a, Point b, Point p) {
+    determinant(a, b, p);
+    const int order = mpz_cmp(v_[6], v_[7]);
+    return order > 0 ? 1 : order < 0 ? -1 : 0;
+  }
+
+  // Whether |(b - a) x (p - a)| <= bound: the determinant is (v6 - v7) * 2^(2 lowest), the bound
+  // m * 2^(e - 53) with m an integer; each side is shifted up to the other's exponent.
+  bool atMost(Point a, Point b, Point p, double bound) {
+    const int lowest = determinant(a, b, p);
+    mpz_sub(v_[6], v_[6], v_[7]);
+    mpz_abs(v_[6], v_[6]);
+    int e = 0;
+    mpz_set_d(v_[8], std::ldexp(std::frexp(bound, &e), 53));  // 0 for 0
+    const long shift = 2L * lowest - (e - 53);
+    if (shift >= 0) {
+      mpz_mul_2exp(v_[6], v_[6], static_cast<mp_bitcnt_t>(shift));
+    } else {
+      mpz_mul_2exp(v_[8], v_[8], static_cast<mp_bitcnt_t>(-shift));
+    }
+    return mpz_cmp(v_[6], v_[8]) <= 0;
+  }
+
+ private:
+  // (bx - ax) * (py - ay) in v6 and (by - ay) * (px - ax) in v7, both over 2^(2 lowest); returns
+  // lowest.
+  int determinant(Point a, Point b, Point p) {
     const double c[6] = {a.x, a.y, b.x, b.y, p.x, p.y};
     // Each non-zero coordinate is m * 2^(e - 53) with m an integer of at most 53 bits.
     int lowest = 0;
@@ -62,13 +88,16 @@ class IntegerOrientation {
     mpz_sub(v_[4], v_[4], v_[0]);  // px - ax
     mpz_mul(v_[6], v_[2], v_[5]);
     mpz_mul(v_[7], v_[3], v_[4]);
-    const int order = mpz_cmp(v_[6], v_[7]);
-    return order > 0 ? 1 : order < 0 ? -1 : 0;
+    return lowest;
   }
 
- private:
-  mpz_t v_[8];
+  mpz_t v_[9];
 };
+
+IntegerOrientation& integerStage() {
+  static thread_local IntegerOrientation integer;
+  return integer;
+}
 
 // Out of line: the filter that decides nearly every call stays a small function.
 [[gnu::noinline]] int orientationBeyondFilter(Point a, Point b, Point p) {
@@ -79,11 +108,22 @@ class IntegerOrientation {
       exactDifference(p.x, a.x, px) && exactProduct(bx, py, el) && exactProduct(by, px, er)) {
     return el > er ? 1 : el < er ? -1 : 0;
   }
-  static thread_local IntegerOrientation integer;
-  return integer.sign(a, b, p);
+  return integerStage().sign(a, b, p);
 }
 
 }  // namespace
+
+bool crossAtMost(Point a, Point b, Point p, double bound) {
+  // Collinear or nearly collinear grid points: the differences, the products and their
+  // difference are exact doubles.
+  double bx, py, by, px, el, er, det;
+  if (exactDifference(b.x, a.x, bx) && exactDifference(p.y, a.y, py) && exactDifference(b.y, a.y, by) &&
+      exactDifference(p.x, a.x, px) && exactProduct(bx, py, el) && exactProduct(by, px, er) &&
+      exactDifference(el, er, det)) {
+    return std::abs(det) <= bound;
+  }
+  return integerStage().atMost(a, b, p, bound);
+}
 
 int orientation(Point a, Point b, Point p) {
   const double l = (b.x - a.x) * (p.y - a.y), r = (b.y - a.y) * (p.x - a.x);

@@ -12,4 +12,8 @@ namespace gh::oracle {
 // underflows or is inexact). Finite coordinates only.
 int orientation(Point a, Point b, Point p);
 
+// Whether |(b - a) x (p - a)| <= bound (a finite bound >= 0), exactly, by the same stages beyond
+// the filter: p within bound / |b - a| of the line ab. The caller filters in doubles first.
+bool crossAtMost(Point a, Point b, Point p, double bound);
+
 }  // namespace gh::oracle

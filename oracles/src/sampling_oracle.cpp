@@ -1,7 +1,5 @@
 #include "ghoracle/sampling_oracle.h"
 
-#include <gmpxx.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -50,8 +48,9 @@ void forUniformPoints(const Box& box, std::uint64_t seed, std::size_t count, F&&
 }
 
 // Whether |(b - a) x (p - a)| <= bound, i.e. p is within bound / |b - a| of the line ab: in
-// doubles when the rounding cannot matter, else in GMP (p near the origin and a, b at 1e144
-// would cancel to noise).
+// doubles when the rounding cannot matter, else exactly (p near the origin and a, b at 1e144
+// would cancel to noise): crossAtMost, whose integer stage allocates nothing (the rationals it
+// replaced took 12,000 instructions a call, 8 % of fuzz_clip_exact's, for 0.6 % of the calls).
 bool lineDistanceAtMost(Point a, Point b, Point p, double bound) {
   const double l = (b.x - a.x) * (p.y - a.y), r = (b.y - a.y) * (p.x - a.x);
   const double det = std::abs(l - r), error = 0x1.0000000000002p-51 * (std::abs(l) + std::abs(r));
@@ -59,9 +58,7 @@ bool lineDistanceAtMost(Point a, Point b, Point p, double bound) {
     if (det + error <= bound) return true;
     if (det - error > bound) return false;
   }
-  const mpq_class bx(b.x), by(b.y), ax(a.x), ay(a.y), px(p.x), py(p.y);
-  const mpq_class exact = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-  return abs(exact) <= mpq_class(bound);
+  return crossAtMost(a, b, p, bound);
 }
 
 // Which of n equal buckets over [lo, hi] holds v, clamped to the ends: a monotone function of

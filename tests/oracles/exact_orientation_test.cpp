@@ -65,6 +65,38 @@ TEST(ExactOrientation, AgreesWithTheRationalDeterminantOnEveryStage) {
   EXPECT_GT(nonzeros, 10000);
 }
 
+// |(b - a) x (p - a)| <= bound against the rationals, with bounds at the determinant itself, an
+// ulp either side of it, far above and below, zero and subnormal, on the same inputs.
+TEST(ExactOrientation, CrossAtMostAgreesWithTheRationalDeterminant) {
+  std::mt19937_64 rng(20261126);
+  int within = 0, beyond = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const Point a{coordinate(rng), coordinate(rng)}, b{coordinate(rng), coordinate(rng)};
+    Point p{coordinate(rng), coordinate(rng)};
+    if (i % 3 == 0) {
+      const double t = std::uniform_int_distribution<int>(-3, 3)(rng) * 0.5;
+      p = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+      if (i % 2 == 0) p.y = std::nextafter(p.y, 1e300);
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+    }
+    const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), px(p.x), py(p.y);
+    const mpq_class cross = abs(mpq_class((bx - ax) * (py - ay) - (by - ay) * (px - ax)));
+    const double near = cross.get_d();  // within an ulp of the exact value
+    const double bounds[] = {near, std::nextafter(near, 0.0), std::nextafter(near, 1e308), 2 * near, near / 2, 0.0,
+                             std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max()};
+    for (double bound : bounds) {
+      if (!std::isfinite(bound) || bound < 0) continue;
+      const bool expected = cross <= mpq_class(bound);
+      ASSERT_EQ(crossAtMost(a, b, p, bound), expected)
+          << std::hexfloat << "a=(" << a.x << ", " << a.y << ") b=(" << b.x << ", " << b.y << ") p=(" << p.x
+          << ", " << p.y << ") bound " << bound;
+      (expected ? within : beyond) += 1;
+    }
+  }
+  EXPECT_GT(within, 50000);
+  EXPECT_GT(beyond, 50000);
+}
+
 TEST(ExactOrientation, CasesNearTheStagesLimits) {
   const double tiny = std::numeric_limits<double>::denorm_min(), big = std::numeric_limits<double>::max();
   const std::vector<std::array<Point, 3>> cases = {
