@@ -655,10 +655,10 @@ class RaysFrom {
 // of radius c/2 only q's own edges cut, all as rays from q, so the points in one direction at two
 // radii below c/2 lie in the same sector: the same side of S, C and the answer, and the outer one
 // is no nearer an edge (the inner is skipped whenever the outer is, as long as c/2 exceeds every
-// edge's delta, `delta`). Of the radii below c/2, only the largest is sampled; of those above,
-// only the smallest (the larger reach the neighbourhoods of other vertices, sampled at those:
-// on 1,644 seed, regression and grown fuzz inputs the naive answers they alone found wrong were
-// none, while they cost 7 % of the exact target's instructions).
+// edge's delta, `delta`). Of the radii below c/2, only the largest is sampled; where there is
+// one, of those above only the smallest (the larger reach the neighbourhoods of other vertices,
+// sampled at those: on 1,644 seed, regression and grown fuzz inputs the naive answers they alone
+// found wrong were none, while they cost 7 % of the exact target's instructions).
 // widerClearance(cap), called at most once, after it, gives c': no edge comes within c' of q but
 // the edges near q, those through q and a few others. Inside the disk of radius c'/2, a point is
 // left out when the segment from the last point judged in its direction (farther out, inside that
@@ -671,10 +671,13 @@ class RaysFrom {
 //
 // At that largest radius below c/2 the points are one per sector of the disk: `fan` (filled by
 // clearanceBelow) holds the far ends of the edges through q or counted so (the rays that alone
-// cut the disk), and a point is judged at the angular middle of each sector between consecutive
-// rays (so a thin sector the eight directions miss is judged too); a point of the eight
-// directions and the bisector is judged only where no middle point was judged in its sector
-// (decided exactly: the rays before its direction), as it lies in one face with that one.
+// cut the disk), and a point is judged in the middle of each sector between consecutive rays (so
+// a thin sector the eight directions miss is judged too); a point of the eight directions and the
+// bisector is judged only where no middle point was judged in its sector (decided exactly: the
+// rays before its direction), as it lies in one face with that one, and not at all where every
+// sector's middle was. At the smallest radius above c/2 the points lie in the sectors' middle
+// directions and both ways along the corner's bisector (on those 1,644 inputs this found every
+// naive answer the eight directions found wrong, and 26 more, with half the points).
 template <class Clearance, class WiderClearance, class Visit, class Separated>
 void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t seed, double delta,
                   Clearance&& clearanceBelow, WiderClearance&& widerClearance, Visit&& visit, Separated&& separated,
@@ -763,25 +766,66 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
     }
     return fan.empty() ? 0 : before % fan.size();
   };
-  auto aroundSectors = [&](double radius) {
-    double angles[64];
-    std::size_t rays = 0;
+  // The sectors' middle directions (unit vectors), once per vertex: the rays' directions in
+  // angular order (by a pseudo-angle, in doubles), and between each two that differ the bisector
+  // of the turn from one to the next. Returns how many; 0 when two distinct rays could not be
+  // told apart so (then the sectors are not known to be all covered).
+  thread_local std::vector<std::pair<double, Point>> rays;  // (pseudo-angle, unit direction)
+  thread_local std::vector<Point> middles;
+  auto sectorMiddles = [&]() -> std::size_t {
+    rays.clear();
+    middles.clear();
     for (const Point& end : fan) {
-      if (rays == 64) break;  // a vertex of many edges: the directions below still cover it
-      angles[rays++] = std::atan2(end.y / 2 - q.y / 2, end.x / 2 - q.x / 2);
+      const double dx = end.x / 2 - q.x / 2, dy = end.y / 2 - q.y / 2, l = length(dx, dy);
+      // The "diamond angle": increasing with the angle from the positive x axis, in [0, 4).
+      const double pseudo = dy >= 0 ? (dx >= 0 ? dy / (dx + dy) : 1 - dx / (dy - dx))
+                                    : (dx < 0 ? 2 - dy / (-dx - dy) : 3 + dx / (dx - dy));
+      rays.push_back({pseudo, Point{dx / l, dy / l}});
     }
-    std::sort(angles, angles + rays);
-    rays = static_cast<std::size_t>(std::unique(angles, angles + rays) - angles);
-    std::size_t covered[64];
-    std::size_t judged = 0;
-    for (std::size_t k = 0; k < std::max<std::size_t>(rays, 1); ++k) {
-      const double from = rays ? angles[k] : phase, to = rays ? (k + 1 < rays ? angles[k + 1] : angles[0] + 2 * pi) : phase + 2 * pi;
-      if (!(to > from)) continue;
-      const double middle = from / 2 + to / 2;
-      const Point p{q.x + radius * std::cos(middle), q.y + radius * std::sin(middle)};
+    if (rays.empty()) {  // no edge through q: one sector, the whole disk
+      middles.push_back({std::cos(phase), std::sin(phase)});
+      return 1;
+    }
+    std::sort(rays.begin(), rays.end(), [](const auto& u, const auto& v) { return u.first < v.first; });
+    bool merged = false;  // distinct ends in one pseudo-angle: perhaps two directions
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < rays.size(); ++i) {
+      if (rays[i].first == rays[k].first) {
+        merged |= !(rays[i].second == rays[k].second);
+        continue;
+      }
+      rays[++k] = rays[i];
+    }
+    rays.resize(k + 1);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const Point a = rays[i].second, b = rays[(i + 1) % rays.size()].second;
+      if (rays.size() == 1) {
+        middles.push_back({-a.x, -a.y});  // the whole turn: straight back
+        continue;
+      }
+      const double cross = a.x * b.y - a.y * b.x, sx = a.x + b.x, sy = a.y + b.y, l = length(sx, sy);
+      if (!(l > 1e-9)) {
+        middles.push_back({-a.y, a.x});  // a half turn: a quarter turn from a
+      } else {
+        const double side = cross >= 0 ? 1 : -1;  // the turn from a to b is less than half, or more
+        middles.push_back({side * sx / l, side * sy / l});
+      }
+    }
+    return merged ? 0 : middles.size();
+  };
+  std::size_t sectors = 0;
+  if (kept >= 0) sectors = sectorMiddles();
+  // At the kept radius: a point at each sector's middle; a direction's point only where its
+  // sector's middle was not judged (all are where every sector's middle was).
+  auto aroundSectors = [&](double radius) {
+    std::size_t covered[64], judged = 0;
+    for (const Point& u : middles) {
+      const Point p{q.x + radius * u.x, q.y + radius * u.y};
       if (!visit(p, radius)) continue;
-      if (const auto sector = sectorOf(p)) covered[judged++] = *sector;
+      const auto sector = sectorOf(p);
+      if (sector && judged < 64 && std::find(covered, covered + judged, *sector) == covered + judged) covered[judged++] = *sector;
     }
+    if (sectors > 0 && judged == sectors) return;
     auto fixed = [&](int k, Point p) {
       const auto sector = sectorOf(p);
       if (sector && std::find(covered, covered + judged, *sector) != covered + judged) return;
@@ -793,9 +837,20 @@ void aroundVertex(Point prev, Point q, Point next, double extent, std::uint64_t 
       fixed(9, Point{q.x - radius * bx, q.y - radius * by});
     }
   };
+  // At the smallest radius outside the clearance: the sectors' middle directions and the
+  // corner's bisector both ways.
+  auto aroundOutside = [&](double radius) {
+    for (const Point& u : middles) visit(Point{q.x + radius * u.x, q.y + radius * u.y}, radius);
+    if (bx != 0 || by != 0) {
+      visit(Point{q.x + radius * bx, q.y + radius * by}, radius);
+      visit(Point{q.x - radius * bx, q.y - radius * by}, radius);
+    }
+  };
   for (int i = 0; i < count; ++i) {
-    if (kept < 0 || radii[i] == above) {
+    if (kept < 0) {
       around(radii[i]);
+    } else if (radii[i] == above) {
+      aroundOutside(radii[i]);
     } else if (radii[i] == kept) {
       aroundSectors(radii[i]);
     }

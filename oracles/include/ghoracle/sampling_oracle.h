@@ -16,8 +16,9 @@
 // face). At the one radius kept inside the clearance, where only the edges through the vertex
 // cut, every sector between them is judged at its angular middle (a thin sector no direction
 // falls in included), and a direction's point only where its sector's middle was not judged.
-// Where a radius is kept so, only the smallest radius outside the clearance is sampled too: the
-// larger ones reach the neighbourhoods of other vertices, which are sampled there.
+// Where a radius is kept so, only the smallest radius outside the clearance is sampled too, in
+// the sectors' middle directions and both ways along the bisector: the larger radii reach the
+// neighbourhoods of other vertices, which are sampled there.
 //
 // Where a correct answer may legitimately disagree: within the rounding zones (exact_oracle.h),
 // which lie along the lines of S and C. A point is skipped when it is within
