@@ -258,7 +258,7 @@ Region CleanUp::dissolveSeams(const Region& region) const {
     const Point a = op.from(e), b = op.to(e);
     boxes[e] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
   }
-  std::vector<std::vector<Point>> cuts(op.size());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> cuts;  // (edge, number of a point cutting it)
   const EdgeGrid grid(op);
   for (std::uint32_t k = 0; k < numbers.size(); ++k) {
     const Point x = numbers.point(k);
@@ -272,30 +272,38 @@ Region CleanUp::dissolveSeams(const Region& region) const {
       for (const std::uint32_t* f = edgesAt.begin(k); f != edgesAt.end(k); ++f) {
         const Point other = fromNumber[*f] == k ? op.to(*f) : op.from(*f);
         if (orientation(a, b, other, counters_) == Sign::Zero) {
-          cuts[e].push_back(x);
+          cuts.push_back({e, k});
           break;
         }
       }
     }
   }
-  // Directed pieces, then cancellation of opposite pairs: a piece cancels while both it and an
-  // opposite copy are still counted, in the order of the pieces.
+  // Directed pieces (each edge's cuts in order from its start), numbered by their ends' numbers
+  // (every end is a vertex), then cancellation of opposite pairs: a piece cancels while both it
+  // and an opposite copy are still counted, in the order of the pieces.
+  std::sort(cuts.begin(), cuts.end(), [&](const auto& u, const auto& v) {
+    return u.first != v.first ? u.first < v.first : PointLess()(numbers.point(u.second), numbers.point(v.second));
+  });
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());  // distinct numbers, distinct points
   std::vector<std::pair<Point, Point>> pieces;
-  pieces.reserve(op.size());
-  for (std::uint32_t e = 0; e < op.size(); ++e) {
-    std::vector<Point>& pts = cuts[e];
-    const Point a = op.from(e), b = op.to(e);
-    std::sort(pts.begin(), pts.end(), PointLess());
-    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-    if (PointLess()(b, a)) std::reverse(pts.begin(), pts.end());
+  std::vector<std::uint32_t> pieceFrom, pieceTo;
+  pieces.reserve(op.size() + cuts.size()), pieceFrom.reserve(pieces.capacity()), pieceTo.reserve(pieces.capacity());
+  auto addPiece = [&](Point from, std::uint32_t u, Point to, std::uint32_t v) {
+    pieces.push_back({from, to}), pieceFrom.push_back(u), pieceTo.push_back(v);
+  };
+  for (std::size_t c = 0, e = 0; e < op.size(); ++e) {
+    std::size_t last = c;  // this edge's cuts are cuts[c, last)
+    while (last < cuts.size() && cuts[last].first == e) ++last;
+    const Point a = op.from(static_cast<std::uint32_t>(e)), b = op.to(static_cast<std::uint32_t>(e));
+    const bool backwards = PointLess()(b, a);
     Point from = a;
-    for (const Point& x : pts) pieces.push_back({from, x}), from = x;
-    pieces.push_back({from, b});
-  }
-  PointNumbers ends(numbers.size());
-  std::vector<std::uint32_t> pieceFrom(pieces.size()), pieceTo(pieces.size());
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    pieceFrom[i] = ends.number(pieces[i].first), pieceTo[i] = ends.number(pieces[i].second);
+    std::uint32_t u = fromNumber[e];
+    for (std::size_t i = 0; i < last - c; ++i) {
+      const std::uint32_t k = cuts[backwards ? last - 1 - i : c + i].second;
+      addPiece(from, u, numbers.point(k), k), from = numbers.point(k), u = k;
+    }
+    addPiece(from, u, b, toNumber[e]);
+    c = last;
   }
   // Counts of directed pieces, keyed by (from, to) numbers: the distinct keys sorted, a count each.
   auto key = [](std::uint32_t u, std::uint32_t v) { return (std::uint64_t{u} << 32) | v; };
@@ -303,17 +311,23 @@ Region CleanUp::dissolveSeams(const Region& region) const {
   for (std::size_t i = 0; i < pieces.size(); ++i) keys[i] = key(pieceFrom[i], pieceTo[i]);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  std::vector<int> count(keys.size(), 0);
-  auto countOf = [&](std::uint64_t k) -> int* {  // null for a key no piece has
+  std::vector<int> count(keys.size() + 1, 0);  // the last: for keys no piece has, never counted
+  auto countOf = [&](std::uint64_t k) {
     const auto it = std::lower_bound(keys.begin(), keys.end(), k);
-    return it != keys.end() && *it == k ? &count[static_cast<std::size_t>(it - keys.begin())] : nullptr;
+    return it != keys.end() && *it == k ? static_cast<std::size_t>(it - keys.begin()) : keys.size();
   };
-  for (std::size_t i = 0; i < pieces.size(); ++i) ++*countOf(key(pieceFrom[i], pieceTo[i]));
+  std::vector<std::uint32_t> forwardOf(pieces.size()), backwardOf(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    forwardOf[i] = static_cast<std::uint32_t>(countOf(key(pieceFrom[i], pieceTo[i])));
+    backwardOf[i] = static_cast<std::uint32_t>(countOf(key(pieceTo[i], pieceFrom[i])));
+    ++count[forwardOf[i]];
+  }
+  count.back() = 0;
   std::vector<std::uint32_t> kept;
   for (std::uint32_t i = 0; i < pieces.size(); ++i) {
     const std::uint32_t u = pieceFrom[i], v = pieceTo[i];
-    int& forward = *countOf(key(u, v));
-    int* backward = countOf(key(v, u));
+    int& forward = count[forwardOf[i]];
+    int* backward = backwardOf[i] < keys.size() ? &count[backwardOf[i]] : nullptr;
     if (forward > 0 && backward && *backward > 0 && u != v) {
       --forward, --*backward;  // this piece and one opposite copy cancel
       continue;
@@ -351,7 +365,7 @@ Region CleanUp::dissolveSeams(const Region& region) const {
   // Chain the remaining pieces; at a vertex with several ways on, take the sharpest right turn,
   // decided exactly. Any choice bounds the same even-odd interior; this one is deterministic
   // (counter-clockwise rings touching at a vertex become one ring through it).
-  const Rows around(ends.size(), [&](auto&& add) {
+  const Rows around(numbers.size(), [&](auto&& add) {
     for (std::uint32_t j = 0; j < kept.size(); ++j) {
       add(pieceFrom[kept[j]], j);
       if (!directed) add(pieceTo[kept[j]], j);
