@@ -456,9 +456,11 @@ std::vector<char> runsNear(const OperandLines& lines, const std::vector<Face>& w
   return near;
 }
 
-// The rounding zone of run i (the hull of its crossings' rounding boxes), as curves whose zone
-// count says on which side the zone lies; false when it has none (no crossing is rounded).
-bool addRoundingZone(const OperandLines& lines, std::size_t i, int k, int ulps, std::vector<Traits::Curve_2>& curves) {
+// The rounding zone of run i (the hull of its crossings' rounding boxes, counter-clockwise, in
+// `hull`), as curves whose zone count says on which side the zone lies; false when it has none
+// (no crossing is rounded).
+bool addRoundingZone(const OperandLines& lines, std::size_t i, int k, int ulps, std::vector<Traits::Curve_2>& curves,
+                     std::vector<KPoint>& zoneHull) {
   using HullKernel = CGAL::Exact_predicates_inexact_constructions_kernel;  // exact predicates
   std::vector<HullKernel::Point_2> corners;
   bool anyBox = false;
@@ -475,6 +477,8 @@ bool addRoundingZone(const OperandLines& lines, std::size_t i, int k, int ulps, 
   std::vector<HullKernel::Point_2> hull;
   CGAL::convex_hull_2(corners.begin(), corners.end(), std::back_inserter(hull));  // counter-clockwise
   if (hull.size() < 3) return false;
+  zoneHull.clear();
+  for (const auto& corner : hull) zoneHull.emplace_back(corner.x(), corner.y());
   for (std::size_t j = 0; j < hull.size(); ++j) {
     const auto& p = hull[j];
     const auto& q = hull[(j + 1) % hull.size()];
@@ -624,37 +628,67 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
       for (const Ring& ring : *r) inputVertices.insert(ring.begin(), ring.end());
     }
     const OperandLines lines(arr, inputVertices);
-    // Each edge once, with the answers whose wrong region it bounds (an edge shared by several
-    // answers' boundaries would otherwise be overlapped in exact arithmetic).
     std::vector<Traits::Curve_2> curves;
-    for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
-      unsigned bounds = 0;
-      for (std::size_t j = 0; j < judged.size(); ++j) {
-        if (judged[j].wrongFaces.empty()) continue;
-        if (isWrong(answers[j].op, j, e->face()) != isWrong(answers[j].op, j, e->twin()->face())) bounds |= 1u << j;
-      }
-      if (bounds) curves.emplace_back(e->curve(), Counts{0, 0, bounds, 0});
-    }
     const std::vector<char> near = runsNear(lines, anyWrong, k, options.constructionUlps);
+    std::vector<Traits::Curve_2> zoneCurves;
+    std::vector<std::vector<KPoint>> hulls(near.size());
     std::vector<char> zone(near.size(), 0);
     for (std::size_t i = 0; i < near.size(); ++i) {
-      zone[i] = near[i] && addRoundingZone(lines, i, k, options.constructionUlps, curves);
+      zone[i] = near[i] && addRoundingZone(lines, i, k, options.constructionUlps, zoneCurves, hulls[i]);
     }
+    // A wrong face whose outer boundary lies in one zone (convex: decided at its vertices,
+    // exactly) is rounding as a whole; an answer whose wrong faces all are needs no arrangement
+    // of its own (most of the exact variant's: slivers along an edge, within one zone).
+    const auto orientation = Kernel().orientation_2_object();
+    auto inZone = [&](Face f, const std::vector<KPoint>& hull) {
+      auto h = *f->outer_ccbs_begin(), first = h;
+      do {
+        const KPoint& p = h->source()->point();
+        for (std::size_t m = 0; m < hull.size(); ++m) {
+          if (orientation(hull[m], hull[(m + 1) % hull.size()], p) == CGAL::RIGHT_TURN) return false;
+        }
+      } while (++h != first);
+      return true;
+    };
     bool anyZone = false;
+    std::vector<char> excused(judged.size(), 0);
     for (std::size_t j = 0; j < judged.size(); ++j) {
       if (judged[j].wrongFaces.empty()) continue;
       const std::vector<char> nearJ = runsNear(lines, judged[j].wrongFaces, k, options.constructionUlps);
       std::size_t zones = 0;
       for (std::size_t i = 0; i < nearJ.size(); ++i) zones += nearJ[i] && zone[i];
       judged[j].v.zones = zones;
-      anyZone |= zones > 0;
+      if (zones == 0) continue;
+      excused[j] = std::all_of(judged[j].wrongFaces.begin(), judged[j].wrongFaces.end(), [&](Face f) {
+        for (std::size_t i = 0; i < nearJ.size(); ++i) {
+          if (nearJ[i] && zone[i] && inZone(f, hulls[i])) return true;
+        }
+        return false;
+      });
+      if (excused[j]) {
+        judged[j].rounding = judged[j].wrongFaces;
+      } else {
+        anyZone = true;
+      }
     }
     if (anyZone) {
+      // The answers not excused so: their wrong regions' boundaries and the zones, each edge once
+      // with the answers whose wrong region it bounds (bit j: answer j; an edge shared by several
+      // answers' boundaries would otherwise be overlapped in exact arithmetic).
+      for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+        unsigned bounds = 0;
+        for (std::size_t j = 0; j < judged.size(); ++j) {
+          if (judged[j].wrongFaces.empty() || judged[j].v.zones == 0 || excused[j]) continue;
+          if (isWrong(answers[j].op, j, e->face()) != isWrong(answers[j].op, j, e->twin()->face())) bounds |= 1u << j;
+        }
+        if (bounds) curves.emplace_back(e->curve(), Counts{0, 0, bounds, 0});
+      }
+      curves.insert(curves.end(), zoneCurves.begin(), zoneCurves.end());
       build(curves, zoned);
       for (auto f = zoned.faces_begin(); f != zoned.faces_end(); ++f) {
         if (f->is_unbounded()) continue;
         for (std::size_t j = 0; j < judged.size(); ++j) {
-          if (judged[j].v.zones == 0 || !resultInside(f->data().bits, j)) continue;
+          if (judged[j].v.zones == 0 || excused[j] || !resultInside(f->data().bits, j)) continue;
           (f->data().zones > 0 ? judged[j].rounding : judged[j].beyond).push_back(f);
         }
       }
