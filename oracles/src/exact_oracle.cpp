@@ -607,8 +607,9 @@ void finish(AnswerJudgement& a, const Arrangement& arr, Op op, std::size_t j, co
 // of them go into one second arrangement, far smaller than S, C and R again: a zone near one
 // answer's wrong faces only can hold nothing of another's, so each answer's faces there are
 // split and excused as in an arrangement of its own (built once instead of once per answer: 68 %
-// of the exact-oracle fuzz target's time went into those). Each verdict's seconds: its own
-// judging and an equal share of building the arrangements.
+// of the exact-oracle fuzz target's time went into those), and an answer whose wrong faces each
+// lie in one zone needs none. Each verdict's seconds: its own judging and an equal share of
+// building the arrangements.
 std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const std::vector<Answer>& answers,
                                 const ExactOptions& options, int k) {
   const auto start = std::chrono::steady_clock::now();
@@ -618,7 +619,6 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
   build(operandCurves(subject, clip, regions), arr);
   std::vector<AnswerJudgement> judged;
   for (std::size_t j = 0; j < answers.size(); ++j) judged.push_back(judgeFaces(arr, subject, clip, answers[j].op, j));
-  const auto zonesStart = std::chrono::steady_clock::now();
   std::vector<Face> anyWrong;
   for (const AnswerJudgement& a : judged) anyWrong.insert(anyWrong.end(), a.wrongFaces.begin(), a.wrongFaces.end());
   Arrangement zoned;
@@ -631,10 +631,12 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
     std::vector<Traits::Curve_2> curves;
     const std::vector<char> near = runsNear(lines, anyWrong, k, options.constructionUlps);
     std::vector<Traits::Curve_2> zoneCurves;
+    std::vector<std::size_t> zoneStart(near.size() + 1, 0);  // run i's curves: [start[i], start[i + 1])
     std::vector<std::vector<KPoint>> hulls(near.size());
     std::vector<char> zone(near.size(), 0);
     for (std::size_t i = 0; i < near.size(); ++i) {
       zone[i] = near[i] && addRoundingZone(lines, i, k, options.constructionUlps, zoneCurves, hulls[i]);
+      zoneStart[i + 1] = zoneCurves.size();
     }
     // A wrong face whose outer boundary lies in one zone (convex: decided at its vertices,
     // exactly) is rounding as a whole; an answer whose wrong faces all are needs no arrangement
@@ -651,7 +653,7 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
       return true;
     };
     bool anyZone = false;
-    std::vector<char> excused(judged.size(), 0);
+    std::vector<char> excused(judged.size(), 0), zoneNeeded(near.size(), 0);
     for (std::size_t j = 0; j < judged.size(); ++j) {
       if (judged[j].wrongFaces.empty()) continue;
       const std::vector<char> nearJ = runsNear(lines, judged[j].wrongFaces, k, options.constructionUlps);
@@ -667,9 +669,10 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
       });
       if (excused[j]) {
         judged[j].rounding = judged[j].wrongFaces;
-      } else {
-        anyZone = true;
+        continue;
       }
+      anyZone = true;
+      for (std::size_t i = 0; i < nearJ.size(); ++i) zoneNeeded[i] |= nearJ[i] && zone[i];
     }
     if (anyZone) {
       // The answers not excused so: their wrong regions' boundaries and the zones, each edge once
@@ -683,7 +686,9 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
         }
         if (bounds) curves.emplace_back(e->curve(), Counts{0, 0, bounds, 0});
       }
-      curves.insert(curves.end(), zoneCurves.begin(), zoneCurves.end());
+      for (std::size_t i = 0; i < near.size(); ++i) {  // the zones near an answer not excused whole
+        if (zoneNeeded[i]) curves.insert(curves.end(), zoneCurves.begin() + zoneStart[i], zoneCurves.begin() + zoneStart[i + 1]);
+      }
       build(curves, zoned);
       for (auto f = zoned.faces_begin(); f != zoned.faces_end(); ++f) {
         if (f->is_unbounded()) continue;
@@ -695,7 +700,7 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
     }
   }
   const auto end = std::chrono::steady_clock::now();
-  const double shared = std::chrono::duration<double>((zonesStart - start) + (end - zonesStart)).count() /
+  const double shared = std::chrono::duration<double>(end - start).count() /
                         static_cast<double>(std::max<std::size_t>(answers.size(), 1));
   std::vector<ExactVerdict> verdicts;
   for (std::size_t j = 0; j < answers.size(); ++j) {

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "exact_orientation.h"
@@ -42,22 +44,35 @@ double coordinate(std::mt19937_64& rng) {
   }
 }
 
+// Three points a, b, p (case i of a run): from the coordinate families, and every third time p on
+// the line through a and b, or an ulp off it, where the filter gives up. False when p is not finite
+// (the judges see finite points only).
+bool triple(std::mt19937_64& rng, int i, Point& a, Point& b, Point& p) {
+  a = {coordinate(rng), coordinate(rng)}, b = {coordinate(rng), coordinate(rng)};
+  p = {coordinate(rng), coordinate(rng)};
+  if (i % 3 == 0) {
+    const double t = std::uniform_int_distribution<int>(-3, 3)(rng) * 0.5;
+    p = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+    if (i % 2 == 0) p.y = std::nextafter(p.y, 1e300);
+  }
+  return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+std::string describe(Point a, Point b, Point p) {
+  std::ostringstream s;
+  s << std::hexfloat << "a=(" << a.x << ", " << a.y << ") b=(" << b.x << ", " << b.y << ") p=(" << p.x << ", " << p.y
+    << ")";
+  return s.str();
+}
+
 TEST(ExactOrientation, AgreesWithTheRationalDeterminantOnEveryStage) {
   std::mt19937_64 rng(20261124);
   int zeros = 0, nonzeros = 0;
   for (int i = 0; i < 200000; ++i) {
-    const Point a{coordinate(rng), coordinate(rng)}, b{coordinate(rng), coordinate(rng)};
-    Point p{coordinate(rng), coordinate(rng)};
-    if (i % 3 == 0) {  // on the line through a and b, or an ulp off it, where the filter gives up
-      const double t = std::uniform_int_distribution<int>(-3, 3)(rng) * 0.5;
-      p = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-      if (i % 2 == 0) p.y = std::nextafter(p.y, 1e300);
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;  // the judges see finite points only
-    }
+    Point a, b, p;
+    if (!triple(rng, i, a, b, p)) continue;
     const int expected = rationalOrientation(a, b, p);
-    ASSERT_EQ(orientation(a, b, p), expected)
-        << std::hexfloat << "a=(" << a.x << ", " << a.y << ") b=(" << b.x << ", " << b.y << ") p=(" << p.x << ", "
-        << p.y << ")";
+    ASSERT_EQ(orientation(a, b, p), expected) << describe(a, b, p);
     (expected == 0 ? zeros : nonzeros) += 1;
   }
   // Both answers were reached often: the test says something about the exact stages.
@@ -71,14 +86,8 @@ TEST(ExactOrientation, CrossAtMostAgreesWithTheRationalDeterminant) {
   std::mt19937_64 rng(20261126);
   int within = 0, beyond = 0;
   for (int i = 0; i < 100000; ++i) {
-    const Point a{coordinate(rng), coordinate(rng)}, b{coordinate(rng), coordinate(rng)};
-    Point p{coordinate(rng), coordinate(rng)};
-    if (i % 3 == 0) {
-      const double t = std::uniform_int_distribution<int>(-3, 3)(rng) * 0.5;
-      p = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-      if (i % 2 == 0) p.y = std::nextafter(p.y, 1e300);
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-    }
+    Point a, b, p;
+    if (!triple(rng, i, a, b, p)) continue;
     const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), px(p.x), py(p.y);
     const mpq_class cross = abs(mpq_class((bx - ax) * (py - ay) - (by - ay) * (px - ax)));
     const double near = cross.get_d();  // within an ulp of the exact value
@@ -87,9 +96,7 @@ TEST(ExactOrientation, CrossAtMostAgreesWithTheRationalDeterminant) {
     for (double bound : bounds) {
       if (!std::isfinite(bound) || bound < 0) continue;
       const bool expected = cross <= mpq_class(bound);
-      ASSERT_EQ(crossAtMost(a, b, p, bound), expected)
-          << std::hexfloat << "a=(" << a.x << ", " << a.y << ") b=(" << b.x << ", " << b.y << ") p=(" << p.x
-          << ", " << p.y << ") bound " << bound;
+      ASSERT_EQ(crossAtMost(a, b, p, bound), expected) << describe(a, b, p) << " bound " << std::hexfloat << bound;
       (expected ? within : beyond) += 1;
     }
   }
@@ -111,9 +118,7 @@ TEST(ExactOrientation, CasesNearTheStagesLimits) {
       {{{0, 0}, {0, 0}, {0, 0}}},
   };
   for (const auto& [a, b, p] : cases) {
-    EXPECT_EQ(orientation(a, b, p), rationalOrientation(a, b, p))
-        << std::hexfloat << "a=(" << a.x << ", " << a.y << ") b=(" << b.x << ", " << b.y << ") p=(" << p.x << ", "
-        << p.y << ")";
+    EXPECT_EQ(orientation(a, b, p), rationalOrientation(a, b, p)) << describe(a, b, p);
   }
 }
 
