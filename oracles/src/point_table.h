@@ -4,6 +4,7 @@
 // time on cache misses. (The clipper has tables of its own; the judges share no code with it.)
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -32,6 +33,12 @@ class PointTable {
   }
 
   std::size_t size() const { return size_; }
+
+  // Empty again, keeping its slots.
+  void clear() {
+    std::fill(slots_.begin(), slots_.end(), Slot{});
+    size_ = 0;
+  }
 
   // The slot index is the hash's low bits, and a double with a short significand (a small
   // integer, a dyadic fraction) has all its low bits zero: each coordinate goes through a full
