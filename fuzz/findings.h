@@ -3,12 +3,16 @@
 // sweep variants' known weaknesses, a peer's disagreement), so a campaign goes on.
 #pragma once
 
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <string>
 #include <utility>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "ghclip/operation.h"
 #include "ghio/formats.h"
@@ -53,11 +57,24 @@ class FindingLog {
     if (pending_.size() >= kBlock) flush();
   }
 
+  // One write(2) of whole lines to a file opened for appending: the kernel appends it in one
+  // piece, so the jobs of a fork-mode campaign (processes appending to one file) never run into
+  // each other's lines. stdio split a block into a write of its 4 KiB pages and one of the rest,
+  // and another job's block could land between them (in the campaign at b82520d, twice in
+  // 474,965 lines, and its report refused the cut lines).
   void flush() {
     if (pending_.empty() || path_.empty()) return;
-    if (std::FILE* f = std::fopen(path_.c_str(), "a")) {
-      std::fwrite(pending_.data(), 1, pending_.size(), f);
-      std::fclose(f);
+    const int fd = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    if (fd >= 0) {
+      const char* next = pending_.data();
+      std::size_t left = pending_.size();
+      while (left > 0) {  // a short write (a full disk, a signal) goes on where it stopped
+        const ssize_t n = ::write(fd, next, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        next += n, left -= static_cast<std::size_t>(n);
+      }
+      ::close(fd);
     }
     pending_.clear();
   }
