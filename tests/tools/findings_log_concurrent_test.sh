@@ -27,12 +27,18 @@ done
 wait
 # The kernel appends one write(2) whole, not several: each flush must be one (strace -y names
 # the file behind each descriptor).
-GHCLIP_FUZZ_FINDINGS="$TMP/traced.tsv" strace -f -qq -y -e trace=openat,write -o "$TMP/trace" \
-  "$BIN/fuzz_clip_naive" "${many[@]}" >/dev/null 2>&1
-opens=$(grep -c 'openat(.*traced\.tsv"' "$TMP/trace" || true)
-writes=$(grep -c '^[0-9]* *write([0-9]*<[^>]*traced\.tsv>' "$TMP/trace" || true)
-test "$opens" -gt 1 || { echo "FAIL: $opens flushes of $(wc -c <"$TMP/traced.tsv") bytes, expected several"; exit 1; }
-test "$writes" -eq "$opens" || { echo "FAIL: $writes writes in $opens flushes"; exit 1; }
+# A container that forbids ptrace cannot run strace: said on the test's output, the rest runs.
+opens=unchecked
+if strace -qq -e trace=none true >/dev/null 2>&1; then
+  GHCLIP_FUZZ_FINDINGS="$TMP/traced.tsv" strace -f -qq -y -e trace=openat,write -o "$TMP/trace" \
+    "$BIN/fuzz_clip_naive" "${many[@]}" >/dev/null 2>&1
+  opens=$(grep -c 'openat(.*traced\.tsv"' "$TMP/trace" || true)
+  writes=$(grep -c '^[0-9]* *write([0-9]*<[^>]*traced\.tsv>' "$TMP/trace" || true)
+  test "$opens" -gt 1 || { echo "FAIL: $opens flushes of $(wc -c <"$TMP/traced.tsv") bytes, expected several"; exit 1; }
+  test "$writes" -eq "$opens" || { echo "FAIL: $writes writes in $opens flushes"; exit 1; }
+else
+  echo "NOTE: strace cannot trace here (ptrace refused): one write per flush not checked"
+fi
 bad=$(awk -F'\t' 'NF != 6' "$TMP/shared.tsv" | wc -l)
 test "$bad" -eq 0 || { echo "FAIL: $bad lines without six fields"; exit 1; }
 test "$(wc -l <"$TMP/shared.tsv")" -eq $((3 * repeats * once)) ||
