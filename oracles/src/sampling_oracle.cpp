@@ -650,8 +650,8 @@ class RaysFrom {
 // on a ring) of every ring of S, C and the answers through q: the vertex is visited once, with
 // one clearance and one fan, and each corner gets the radii it would get alone (below), the
 // union sampled once. (Visiting it once per corner cost 46 % more instructions on the clip
-// targets' corpus and found 3 naive answers fewer wrong; one local scale for all corners, the shortest, lost
-// 19 of 4,102 naive findings there.)
+// targets' corpus and found 3 naive answers fewer wrong; one local scale for all corners, the
+// shortest, lost 19 of 4,102 naive findings there.)
 //
 // visit(p, r) gets each point p and its radius r, and says whether p was judged (not skipped).
 // Points that add nothing are left out. clearanceBelow(cap), called once before the first visit,
@@ -661,9 +661,9 @@ class RaysFrom {
 // radii below c/2 lie in the same sector: the same side of S, C and the answer, and the outer one
 // is no nearer an edge (the inner is skipped whenever the outer is, as long as c/2 exceeds every
 // edge's delta, `delta`). Of the radii below c/2, only the largest is sampled; where a corner
-// has one, of its radii above only the smallest (the larger reach the neighbourhoods of other vertices,
-// sampled at those: on 1,644 seed, regression and grown fuzz inputs the naive answers they alone
-// found wrong were none, while they cost 7 % of the exact target's instructions).
+// has one, of its radii above only the smallest (the larger reach the neighbourhoods of other
+// vertices, sampled at those: on 1,644 seed, regression and grown fuzz inputs the naive answers
+// they alone found wrong were none, while they cost 7 % of the exact target's instructions).
 // widerClearance(cap), called at most once, after it, gives c': no edge comes within c' of q but
 // the edges near q, those through q and a few others. Inside the disk of radius c'/2, a point is
 // left out when the segment from the last point judged in its direction (farther out, inside that
@@ -1070,8 +1070,8 @@ class Sampler {
       };
       const double delta = operandEdges_.largestCoarseDelta();
       // Every vertex once, with the corners (its neighbours) of every ring of S, C and the
-      // answers through it: one clearance, one set of radii (from its shortest edge) and sectors,
-      // and each corner's bisector.
+      // answers through it: one clearance and one fan of sectors, each corner at its own radii
+      // and along its own bisector (aroundVertex).
       vertices_.clear(), cornersAt_.clear();
       vertexIndex_.clear();
       std::size_t operandVertex = 0;  // an S or C vertex's place in operandClearance_
