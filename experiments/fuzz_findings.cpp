@@ -3,7 +3,6 @@
 // counts per operation and per kind of coordinates. Prints a markdown table for the report.
 //   fuzz_findings FINDINGS.tsv...
 #include <CLI/CLI.hpp>
-#include <gmpxx.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +18,7 @@
 #include "ghclip/operation.h"
 #include "ghclip/region.h"
 #include "ghio/formats.h"
+#include "ghoracle/exact_orientation.h"
 #include "tool_main.h"
 
 using namespace gh;
@@ -30,10 +30,10 @@ struct Edge {
   std::size_t ring, index;
 };
 
-int orientation(Point a, Point b, Point p) {
-  const mpq_class d = (mpq_class(b.x) - a.x) * (mpq_class(p.y) - a.y) - (mpq_class(b.y) - a.y) * (mpq_class(p.x) - a.x);
-  return sgn(d);
-}
+// The judges' exact orientation (a filter in doubles first): rationals for every test took 10
+// minutes over the 930,694 findings of one hour-long campaign.
+using oracle::orientation;
+
 // p on the closed segment ab, given that the three are collinear.
 bool within(Point a, Point b, Point p) {
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
@@ -50,6 +50,9 @@ std::string degeneracy(const Region& s, const Region& c) {
   for (const Region* r : {&s, &c}) {
     for (const Ring& ring : *r) {
       for (std::size_t i = 0; i < ring.size(); ++i) {
+        // The targets refuse non-finite input before they judge; a line written otherwise is
+        // named, not tested (the orientation takes finite coordinates only).
+        if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y)) return "non-finite coordinates";
         edges.push_back({ring[i], ring[(i + 1) % ring.size()], ringId, i});
         extent = std::max({extent, std::abs(ring[i].x), std::abs(ring[i].y)});
       }

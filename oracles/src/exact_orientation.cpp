@@ -1,4 +1,4 @@
-#include "exact_orientation.h"
+#include "ghoracle/exact_orientation.h"
 
 #include <gmp.h>
 

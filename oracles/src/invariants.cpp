@@ -8,7 +8,7 @@
 
 #include "ghclip/measure.h"
 #include "ghoracle/tolerance.h"
-#include "exact_orientation.h"
+#include "ghoracle/exact_orientation.h"
 #include "judging_scale.h"
 
 namespace gh::oracle {

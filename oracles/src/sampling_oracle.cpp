@@ -10,7 +10,7 @@
 #include <tuple>
 #include <vector>
 
-#include "exact_orientation.h"
+#include "ghoracle/exact_orientation.h"
 #include "judging_scale.h"
 #include "mix_bits.h"
 #include "point_table.h"

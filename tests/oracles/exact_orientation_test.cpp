@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "exact_orientation.h"
+#include "ghoracle/exact_orientation.h"
 
 namespace gh::oracle {
 namespace {
