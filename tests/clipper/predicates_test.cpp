@@ -176,6 +176,119 @@ RC_GTEST_PROP(CrossSign, DecidesNearlyParallelDirectionsInDoubles, ()) {
   RC_ASSERT(counters.filterFailures == 0u);
 }
 
+// Coordinates of every magnitude at once: each a small integer times its own power of two, from
+// the subnormals to 2^480, so that one difference may span hundreds of binades (its rounding
+// error is then tiny beside it) and products of such errors underflow. Half the time d - c is
+// b - a scaled by a power of two (parallel: an exact zero to decide). The sign is the rationals'.
+RC_GTEST_PROP(CrossSign, AgreesWithRationalsAtMixedMagnitudes, ()) {
+  const auto coord = [] { return std::ldexp(*rc::gen::inRange(-64, 65), *rc::gen::inRange(-1074, 481)); };
+  const Point a{coord(), coord()}, b{coord(), coord()}, c{coord(), coord()};
+  Point d{coord(), coord()};
+  if (*rc::gen::arbitrary<bool>()) {
+    const int k = *rc::gen::inRange(-20, 21);
+    d = {c.x + std::ldexp(b.x - a.x, k), c.y + std::ldexp(b.y - a.y, k)};
+  }
+  RC_PRE(std::isfinite(d.x) && std::isfinite(d.y) && std::abs(d.x) <= 0x1p500 && std::abs(d.y) <= 0x1p500);
+  ExactCounters counters;
+  const int exact = sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+  RC_ASSERT(static_cast<int>(crossSign(a, b, c, d, counters)) == exact);
+}
+
+// Found by the property above: the filter's error bound underflowed. (b - a) and (d - c) are
+// near 2^-343 and 2^-556 with rounding errors near 2^-898, so the products of a value and an error
+// (2^-1241, 2^-1451) flush to 0: the filter carried a zero bound, took the rounded determinant
+// (0) for exact and said Zero for a clockwise turn.
+TEST(CrossSign, AnErrorBoundThatUnderflowsDecidesNothing) {
+  ExactCounters counters;
+  const Point a{-0x1p-898, -0x1p-898}, b{-0x1p-556, -0x1p-343}, c{-0x1p-899, -0x1p-895}, d{-0x1p-556, -0x1p-343};
+  const int exact = sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+  ASSERT_EQ(exact, -1);
+  EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), exact);
+  const Approx u = Approx(b.x) - Approx(a.x), v = Approx(d.y) - Approx(c.y);
+  EXPECT_EQ(certainSign(u * v - Approx(u.v * v.v)), std::nullopt);
+}
+
+// Small coordinates (every point near 2^e, e down to the subnormals) are decided in doubles: the
+// differences are scaled up before their products, which would otherwise underflow and send
+// every such predicate to GMP. Collinear and parallel cases included.
+RC_GTEST_PROP(CrossSign, DecidesSmallCoordinatesInDoubles, ()) {
+  const int e = *rc::gen::inRange(-1074, -400);
+  const auto coord = [e] { return std::ldexp(*rc::gen::inRange(-64, 65), e); };
+  const Point a{coord(), coord()}, b{coord(), coord()}, c{coord(), coord()};
+  Point d{coord(), coord()};
+  if (*rc::gen::arbitrary<bool>()) d = {c.x + 2 * (b.x - a.x), c.y + 2 * (b.y - a.y)};
+  ExactCounters counters;
+  const int exact = sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+  RC_ASSERT(static_cast<int>(crossSign(a, b, c, d, counters)) == exact);
+  RC_ASSERT(counters.filterFailures == 0u);
+}
+
+// A difference that spans 1000 binades (2^500 minus a subnormal) has a rounding error so small
+// that its products with the other pair's errors underflow: they are bounded, not computed, and
+// the sign is still decided in doubles unless the rest cancels.
+TEST(CrossSign, BoundsProductsTooSmallToMakeExact) {
+  ExactCounters counters;
+  const double big = 0x1p500, tiny = 0x1p-1070;
+  const Point a{tiny, tiny}, b{big, 3 * tiny}, c{-tiny, 5 * tiny}, d{big, big};
+  const int exact = sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+  EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), exact);
+  EXPECT_EQ(counters.filterFailures, 0u);
+  // Everything computed cancels: what was left out could be all there is, so GMP decides. The
+  // same direction twice is a zero; (2^500 + 2t)^2 - (2^500 + t)(2^500 + 3t) = t^2 is not.
+  const Point e{-tiny, -tiny}, f{big, big};
+  EXPECT_EQ(crossSign(e, f, e, f, counters), Sign::Zero);
+  EXPECT_EQ(counters.filterFailures, 1u);
+  EXPECT_EQ(crossSign({-2 * tiny, -tiny}, f, {-3 * tiny, -2 * tiny}, f, counters), Sign::Positive);
+  EXPECT_EQ(counters.filterFailures, 2u);
+}
+
+// The SoS order of two crossings along an edge, term by term in rationals (sos_predicates.cpp):
+// the sign of F0 + b F1 eps + c F2 eps^2, times the signs of D_M and D_N.
+int rationalOrder(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2, int b, int c) {
+  const mpq_class mx = mpq_class(m2.x) - m1.x, my = mpq_class(m2.y) - m1.y, nx = mpq_class(n2.x) - n1.x, ny = mpq_class(n2.y) - n1.y;
+  const mpq_class ax = mpq_class(a1.x) - a2.x, ay = mpq_class(a1.y) - a2.y;
+  const mpq_class dM = mx * ay - my * ax, dN = nx * ay - ny * ax;
+  const mpq_class aM = mx * (mpq_class(a1.y) - m1.y) - my * (mpq_class(a1.x) - m1.x);
+  const mpq_class aN = nx * (mpq_class(a1.y) - n1.y) - ny * (mpq_class(a1.x) - n1.x);
+  const int f0 = sgn(aM * dN - aN * dM), f1 = sgn(my * dN - ny * dM), f2 = sgn(mx * dN - nx * dM);
+  const int s = f0 != 0 ? f0 : f1 != 0 ? b * f1 : c * f2;
+  return s * sgn(dM) * sgn(dN);
+}
+
+// Near-grid points (grid points moved by a few ulps or by 2^-k, at any scale), three edges through
+// one point v or not: the order agrees with the rationals along subject and clip edges, and a tie
+// in F0 (crossings at one point, F0 exactly 0 while the filter carries rounding errors) is
+// decided in doubles, not GMP, unless a coordinate is far smaller than the rest.
+RC_GTEST_PROP(SoS, OrderAgreesWithRationalsOnNearGridPoints, ()) {
+  const int e = *rc::gen::inRange(-1000, 200);
+  const auto coord = [e] {
+    double x = *rc::gen::inRange(-8, 9);
+    switch (*rc::gen::inRange(0, 3)) {
+      case 0: for (int k = *rc::gen::inRange(-3, 4); k != 0; k += k > 0 ? -1 : 1) x = std::nextafter(x, k > 0 ? 9.0 : -9.0); break;
+      case 1: x += std::ldexp(1.0, -*rc::gen::inRange(1, 60)); break;
+      default: break;
+    }
+    return std::ldexp(x, e);
+  };
+  const auto point = [&] { return Point{coord(), coord()}; };
+  const Point v = point(), a = point(), m = point(), n = point();
+  const bool shared = *rc::gen::arbitrary<bool>();  // M and N through v, an end of the edge
+  const Point m1 = shared ? v : point(), n1 = shared ? v : point();
+  RC_PRE(!(a == v) && !(m == m1) && !(n == n1));
+  const bool reverse = *rc::gen::arbitrary<bool>();
+  const Point a1 = reverse ? a : v, a2 = reverse ? v : a;
+  ExactCounters counters;
+  RC_ASSERT(sos::compareAlongSubject(a1, a2, m1, m, n1, n, counters) == rationalOrder(a1, a2, m1, m, n1, n, +1, -1));
+  RC_ASSERT(sos::compareAlongClip(a1, a2, m1, m, n1, n, counters) == rationalOrder(a1, a2, m1, m, n1, n, -1, +1));
+  // 0 moved by an ulp is subnormal: beside the others' ~2^e its products with rounding errors
+  // underflow, and GMP decides (rightly); every other case is decided in doubles.
+  bool subnormal = false;
+  for (const Point& p : {a1, a2, m1, m, n1, n}) {
+    for (const double x : {p.x, p.y}) subnormal |= x != 0 && std::abs(x) < std::ldexp(1.0, e - 100);
+  }
+  RC_ASSERT(subnormal || counters.filterFailures == 0u);
+}
+
 // The order of crossings that tend to one point (many edges through one vertex) from the eps terms
 // alone, factored (sos_predicates.cpp), against the expansion evaluated term by term in rationals.
 RC_GTEST_PROP(SoS, OrderAtASharedLimitAgreesWithRationals, ()) {
@@ -229,18 +342,24 @@ TEST(SoS, IdenticalEdgesDoNotCrossButShiftedOnesDo) {
 
 // Regression: the exact fallback of the ordering predicate crashed (a gmpxx expression template
 // returned from a lambda referred to the lambda's own parameters). The pentagram's tip lies
-// 6e-17 off the clip line x = 0, so the order along that line needs exact arithmetic.
+// 6e-17 off the clip line x = 0, so the order along that line needs exact arithmetic: in doubles
+// at this scale; at 2^300 (differences beyond what the doubles stage takes) in GMP, the fallback
+// that crashed. Both give the rationals' order.
 TEST(SoS, OrderingFallsBackToExactArithmeticSafely) {
-  ExactCounters counters;
-  const Point tip{6.123233995736766e-17, 1};
-  const Point left{-0.58778525229247325, -0.80901699437494734}, right{0.58778525229247303, -0.80901699437494756};
-  const Point q1{0, 2}, q2{0, -2};
-  const int order = sos::compareAlongClip(q1, q2, tip, left, right, tip, counters);
-  EXPECT_NE(order, 0);
-  EXPECT_EQ(order, -sos::compareAlongClip(q1, q2, right, tip, tip, left, counters));
-  EXPECT_GT(counters.filterFailures, 0u);
-  // Two clip edges through one subject vertex are ordered along the subject edge, never tied.
-  EXPECT_NE(sos::compareAlongSubject({-1, 0}, {1, 0}, {0, -1}, {0, 0}, {0, 0}, {1, 1}, counters), 0);
+  for (const int scale : {0, 300}) {
+    ExactCounters counters;
+    const auto at = [scale](Point p) { return Point{std::ldexp(p.x, scale), std::ldexp(p.y, scale)}; };
+    const Point tip = at({6.123233995736766e-17, 1});
+    const Point left = at({-0.58778525229247325, -0.80901699437494734}), right = at({0.58778525229247303, -0.80901699437494756});
+    const Point q1 = at({0, 2}), q2 = at({0, -2});
+    const int order = sos::compareAlongClip(q1, q2, tip, left, right, tip, counters);
+    EXPECT_NE(order, 0);
+    EXPECT_EQ(order, rationalOrder(q1, q2, tip, left, right, tip, -1, +1)) << scale;
+    EXPECT_EQ(order, -sos::compareAlongClip(q1, q2, right, tip, tip, left, counters));
+    EXPECT_GT(scale == 0 ? counters.expansionDecisions : counters.filterFailures, 0u) << scale;
+    // Two clip edges through one subject vertex are ordered along the subject edge, never tied.
+    EXPECT_NE(sos::compareAlongSubject(at({-1, 0}), at({1, 0}), at({0, -1}), at({0, 0}), at({0, 0}), at({1, 1}), counters), 0);
+  }
 }
 
 // The one ray test: a vertex on the ray's line counts on one side only, so a ray through a vertex

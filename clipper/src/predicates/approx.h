@@ -30,6 +30,10 @@ namespace approx {
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Below it a product in the error bound may round with more than the relative error that
+// certainSign's margin covers (subnormal results), or flush to 0.
+inline constexpr double kLeastSafeErrorTerm = 0x1p-1000;
+
 inline bool safeMagnitude(double x) {
   const double a = std::abs(x);
   return a == 0 || (a > 0x1p-900 && a < 0x1p900);
@@ -54,7 +58,14 @@ inline Approx operator*(const Approx& a, const Approx& b) {
   if (underflowed || !approx::safeMagnitude(a.v) || !approx::safeMagnitude(b.v) || !approx::safeMagnitude(v)) {
     return {v, approx::kInf};
   }
-  return {v, std::abs(a.v) * b.e + std::abs(b.v) * a.e + a.e * b.e + std::abs(twoProductBySplitting(a.v, b.v).lo)};
+  // The bound's own products must not lose their value below the normal range: a value times an
+  // error that flushed to 0 (2^-343 times 2^-898) made the bound 0, and a zero bound certifies.
+  const double terms[3] = {std::abs(a.v) * b.e, std::abs(b.v) * a.e, a.e * b.e};
+  const double factors[3][2] = {{a.v, b.e}, {b.v, a.e}, {a.e, b.e}};
+  for (int i = 0; i < 3; ++i) {
+    if (factors[i][0] != 0 && factors[i][1] != 0 && !(terms[i] >= approx::kLeastSafeErrorTerm)) return {v, approx::kInf};
+  }
+  return {v, terms[0] + terms[1] + terms[2] + std::abs(twoProductBySplitting(a.v, b.v).lo)};
 }
 
 // The sign of the true value if the bound decides it.

@@ -1,7 +1,8 @@
 // The one filtered-predicate helper of the library, as CGAL's Filtered_predicate: a predicate is
 // written once, generically over a number policy, and run first with floating-point values that
 // carry a certified error bound (Approx), then, only if some sign it needed was not certain, with
-// exact rationals (GMP), counted as a filter failure.
+// exact rationals (GMP), counted as a filter failure; optionally with a stage exact in doubles
+// between the two.
 //
 //   Sign s = filteredPredicate([&](auto numbers) -> std::optional<Sign> {
 //     using N = typename decltype(numbers)::Number;
@@ -39,6 +40,19 @@ struct ExactNumbers {
 template <class Predicate>
 auto filteredPredicate(Predicate&& predicate, ExactCounters& counters) {
   if (auto quick = predicate(FilterNumbers{})) return *quick;
+  ++counters.filterFailures;
+  return *predicate(ExactNumbers{});
+}
+
+// The same with a stage between the filter and GMP: inDoubles() gives the sign exactly in doubles
+// where it can (difference_products.h), counted as an expansion decision, or nothing.
+template <class Predicate, class InDoubles>
+auto filteredPredicate(Predicate&& predicate, InDoubles&& inDoubles, ExactCounters& counters) {
+  if (auto quick = predicate(FilterNumbers{})) return *quick;
+  if (auto exact = inDoubles()) {
+    ++counters.expansionDecisions;
+    return *exact;
+  }
   ++counters.filterFailures;
   return *predicate(ExactNumbers{});
 }

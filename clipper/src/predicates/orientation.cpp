@@ -4,6 +4,7 @@
 #include <optional>
 #include <tuple>
 
+#include "predicates/difference_products.h"
 #include "predicates/expansion.h"
 #include "predicates/filtered_predicate.h"
 
@@ -11,26 +12,30 @@ namespace gh::detail {
 
 namespace {
 
-// (b - a) x (d - c) exactly in doubles, where that is exact: the differences as two terms each
-// (twoDiff), their products as two terms each (Dekker's splitting: every factor below 2^996), 16
-// terms summed exactly. Empty when a product's rounding error could fall below the subnormal
-// range (then twoProduct would not be exact).
+// (b - a) x (d - c) exactly in doubles: the differences as two terms each (twoDiff), each pair
+// scaled up together when it is small (the sign stands: difference_products.h), their products as
+// two terms each, 16 terms summed exactly. A product too small to be made exact (the differences
+// of one pair span hundreds of binades) is left out, and bounded: |x y| < 2^-899. The sum's
+// largest component holds all but an ulp of it, so while it exceeds twice what was left out, its
+// sign is the sign; empty when it does not.
 std::optional<Sign> crossSignInDoubles(Point a, Point b, Point c, Point d) {
-  const TwoTerm u = twoDiff(b.x, a.x), v = twoDiff(d.y, c.y), w = twoDiff(b.y, a.y), z = twoDiff(d.x, c.x);
-  const double left[2] = {u.hi, u.lo}, right[2] = {v.hi, v.lo}, left2[2] = {w.hi, w.lo}, right2[2] = {z.hi, z.lo};
+  TwoTerm left[2] = {twoDiff(b.x, a.x), twoDiff(b.y, a.y)}, right[2] = {twoDiff(d.y, c.y), twoDiff(d.x, c.x)};
+  scaleUpTogether(left, 2), scaleUpTogether(right, 2);
+  const double u[2] = {left[0].hi, left[0].lo}, w[2] = {left[1].hi, left[1].lo};
+  const double v[2] = {right[0].hi, right[0].lo}, z[2] = {right[1].hi, right[1].lo};
   double terms[16];
-  int n = 0;
+  std::size_t n = 0;
+  double leftOut = 0;  // a bound on the products left out
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
-      for (const auto& [x, y, sign] : {std::tuple{left[i], right[j], 1.0}, std::tuple{left2[i], right2[j], -1.0}}) {
-        // A product of nonzero factors that is tiny (or underflowed to 0) may have lost bits.
-        if (x != 0 && y != 0 && !(std::abs(x * y) >= 0x1p-900)) return std::nullopt;
-        const TwoTerm t = twoProductBySplitting(x, y);
-        terms[n++] = sign * t.hi, terms[n++] = sign * t.lo;
-      }
+      if (!appendProduct(u[i], v[j], 1.0, terms, n)) leftOut += 2 * kLeastExactProduct;
+      if (!appendProduct(w[i], z[j], -1.0, terms, n)) leftOut += 2 * kLeastExactProduct;
     }
   }
-  return signOfExactSum(terms);
+  const std::size_t m = exactSum(terms, n, terms);
+  const double leading = m == 0 ? 0 : terms[m - 1];
+  if (leftOut > 0 && !(std::abs(leading) > 2 * leftOut)) return std::nullopt;
+  return signOf(leading);
 }
 
 }  // namespace

@@ -1,11 +1,51 @@
 #include "predicates/sos_predicates.h"
 
+#include <cmath>
+#include <optional>
+
+#include "predicates/difference_products.h"
 #include "predicates/even_odd_ray.h"
 #include "predicates/filtered_predicate.h"
 #include "predicates/orientation.h"
 
 namespace gh::detail::sos {
 namespace {
+
+// F0 = A_M D_N - A_N D_M (below) exactly in doubles: the ten differences it is made of, scaled up
+// together when small (F0 is homogeneous in them, of degree 4), the four cross products as
+// expansions, and their products summed exactly (difference_products.h). Empty when a product is
+// too small to be made exact, a difference exceeds 2^240 (the degree-4 terms could overflow), or
+// the expansions are long enough to need more than kTerms terms: GMP decides those.
+std::optional<Sign> f0InDoubles(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2) {
+  TwoTerm d[10] = {twoDiff(m2.x, m1.x), twoDiff(m2.y, m1.y), twoDiff(n2.x, n1.x), twoDiff(n2.y, n1.y),
+                   twoDiff(a1.x, a2.x), twoDiff(a1.y, a2.y), twoDiff(a1.x, m1.x), twoDiff(a1.y, m1.y),
+                   twoDiff(a1.x, n1.x), twoDiff(a1.y, n1.y)};
+  scaleUpTogether(d, 10);
+  for (const TwoTerm& t : d) {
+    if (!(std::abs(t.hi) <= 0x1p240)) return std::nullopt;
+  }
+  const auto& [mx, my, nx, ny, ax, ay, amx, amy, anx, any] = d;
+  double aM[16], dN[16], aN[16], dM[16];
+  const auto lengthAM = crossExpansion(mx, my, amx, amy, aM), lengthDN = crossExpansion(nx, ny, ax, ay, dN);
+  const auto lengthAN = crossExpansion(nx, ny, anx, any, aN), lengthDM = crossExpansion(mx, my, ax, ay, dM);
+  if (!lengthAM || !lengthDN || !lengthAN || !lengthDM) return std::nullopt;
+  constexpr std::size_t kTerms = 256;
+  if (2 * (*lengthAM * *lengthDN + *lengthAN * *lengthDM) > kTerms) return std::nullopt;
+  double terms[kTerms];
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < *lengthAM; ++i) {
+    for (std::size_t j = 0; j < *lengthDN; ++j) {
+      if (!appendProduct(aM[i], dN[j], 1.0, terms, n)) return std::nullopt;
+    }
+  }
+  for (std::size_t i = 0; i < *lengthAN; ++i) {
+    for (std::size_t j = 0; j < *lengthDM; ++j) {
+      if (!appendProduct(aN[i], dM[j], -1.0, terms, n)) return std::nullopt;
+    }
+  }
+  const std::size_t m = exactSum(terms, n, terms);
+  return m == 0 ? Sign::Zero : signOf(terms[m - 1]);
+}
 
 // Order of the crossings of line L (a1 -> a2) with lines M (m1, m2) and N (n1, n2) along L. The
 // parameter along L at the crossing with M expands as
@@ -34,7 +74,7 @@ int compare(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2, int bSig
           const N value = aM * cross(nx, ny, ax, ay) - aN * cross(mx, my, ax, ay);
           return numbers.sign(value);
         },
-        counters);
+        [&] { return f0InDoubles(a1, a2, m1, m2, n1, n2); }, counters);
     if (f0 != Sign::Zero) return static_cast<int>(f0) * denominator;
   }
   const int x = static_cast<int>(crossSign(m1, m2, n1, n2, counters));
