@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "predicates/construction.h"
+#include "predicates/difference_products.h"
 #include "predicates/orientation.h"
 #include "predicates/sos_predicates.h"
 
@@ -43,12 +44,17 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
     return {};
   }
   // Each determinant is evaluated once: its sign (filtered, exact when needed) decides the
-  // crossing, and its value and bound give the crossing's position along the edge.
-  const FilteredDeterminant dP1 = orientationDeterminant(q1, q2, p1), dP2 = orientationDeterminant(q1, q2, p2);
-  const Sign oP1 = orientation(dP1, q1, q2, p1, *counters_), oP2 = orientation(dP2, q1, q2, p2, *counters_);
+  // crossing, and its value and bound give the crossing's position along the edge. Edges near
+  // 1e-300 or 1e150 are scaled together first: the determinants' bounds would be infinite and
+  // every order along the edges left to the exact predicates; no sign or position changes
+  // (difference_products.h), and the crossing point below is made from the originals.
+  Point s1 = p1, s2 = p2, t1 = q1, t2 = q2;
+  scaleTowardsUnit({&s1, &s2, &t1, &t2});
+  const FilteredDeterminant dP1 = orientationDeterminant(t1, t2, s1), dP2 = orientationDeterminant(t1, t2, s2);
+  const Sign oP1 = orientation(dP1, t1, t2, s1, *counters_), oP2 = orientation(dP2, t1, t2, s2, *counters_);
   if (sos::clipEdgeSide(oP1, q1, q2) == sos::clipEdgeSide(oP2, q1, q2)) return {};
-  const FilteredDeterminant dQ1 = orientationDeterminant(p1, p2, q1), dQ2 = orientationDeterminant(p1, p2, q2);
-  const Sign oQ1 = orientation(dQ1, p1, p2, q1, *counters_), oQ2 = orientation(dQ2, p1, p2, q2, *counters_);
+  const FilteredDeterminant dQ1 = orientationDeterminant(s1, s2, t1), dQ2 = orientationDeterminant(s1, s2, t2);
+  const Sign oQ1 = orientation(dQ1, s1, s2, t1, *counters_), oQ2 = orientation(dQ2, s1, s2, t2, *counters_);
   if (sos::subjectEdgeSide(oQ1, p1, p2) == sos::subjectEdgeSide(oQ2, p1, p2)) return {};
 
   x.subjectEdge = subjectEdge;

@@ -41,11 +41,22 @@ std::optional<Sign> crossSignInDoubles(Point a, Point b, Point c, Point d) {
 }  // namespace
 
 Sign crossSign(Point a, Point b, Point c, Point d, ExactCounters& counters) {
+  // Points near 1e-300 or 1e150 are scaled towards 1 first (difference_products.h: the sign
+  // stands), so that every stage below works there as at 1.
+  scaleTowardsUnit({&a, &b, &c, &d});
   // Shewchuk's stage-A bound (each factor is one rounded difference, as in orientation()), then
   // the floating-point filter with a running error bound, then the exact sum in doubles, then GMP.
+  // Stage A needs products in the normal range: when they are not, each pair of rounded
+  // differences is scaled by a power of two first (exactly; each keeps its relative rounding
+  // error, and the sign stands), so that coordinates near 1e-300 or 1e150 are decided here as at 1.
   {
-    const double left = (b.x - a.x) * (d.y - c.y), right = (b.y - a.y) * (d.x - c.x);
-    const double sum = std::abs(left) + std::abs(right);
+    double ux = b.x - a.x, uy = b.y - a.y, vx = d.x - c.x, vy = d.y - c.y;
+    double left = ux * vy, right = uy * vx;
+    double sum = std::abs(left) + std::abs(right);
+    if (!(sum > 0x1p-900 && sum < 0x1p900)) {
+      scaleTowardsUnit(ux, uy), scaleTowardsUnit(vx, vy);
+      left = ux * vy, right = uy * vx, sum = std::abs(left) + std::abs(right);
+    }
     if (sum > 0x1p-900 && sum < 0x1p900) {
       if (const auto s = certainSign(left - right, (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * sum)) return *s;
     }
