@@ -5,7 +5,8 @@
 // report gives medians, the ratio, and how often exact arithmetic was needed. Google Benchmark's
 // JSON goes beside the report (OUT.json) and the report is made from it. A second table times
 // the construction of crossing points alone: the paper's double formula against the certified
-// construction, on this processor's code path and on the one for processors without fma.
+// construction, on this processor's code path and on the one for processors without fma. A third
+// times the exact variant on the same pairs scaled to near 1e-301 and 1e150.
 //   exact_speed OUT.md [google benchmark flags]
 #include <benchmark/benchmark.h>
 
@@ -89,6 +90,21 @@ const Construction kConstructions[] = {
      detail::constructCrossingWithoutFmaInstruction},
 };
 
+// The exact variant on the same random pairs scaled by powers of two (workloads/: +tiny is 2^-997,
+// near 1e-301; +huge brings the largest coordinate to about 2^497, near 1e150): the filters must
+// decide there as at 1 (points are scaled towards 1 before them, difference_products.h).
+struct Magnitude {
+  const char* name;
+  const char* suffix;
+  const char* label;
+};
+const Magnitude kMagnitudes[] = {
+    {"unit", "", "unit square"},
+    {"tiny", "+tiny", "scaled by 2^-997 (~1e-301)"},
+    {"huge", "+huge", "scaled to ~2^497 (~1e150)"},
+};
+constexpr long kMagnitudeSize = 100;
+
 }  // namespace
 
 int run(int argc, char** argv) {
@@ -105,6 +121,14 @@ int run(int argc, char** argv) {
         });
     for (long n : kSizes) b->Arg(n);
     b->Unit(benchmark::kMicrosecond)->MinTime(0.2)->Repetitions(kRepetitions);
+  }
+  for (const Magnitude& m : kMagnitudes) {
+    auto* b = benchmark::RegisterBenchmark(
+        (std::string("magnitude/") + m.name).c_str(), [m](benchmark::State& s) {
+          runMethodOnPool(s, "exact", seededPool(std::string("random") + m.suffix, static_cast<std::size_t>(s.range(0))),
+                          Op::Intersection);
+        });
+    b->Arg(kMagnitudeSize)->Unit(benchmark::kMicrosecond)->MinTime(0.2)->Repetitions(kRepetitions);
   }
   for (const Construction& c : kConstructions) {
     auto* b = benchmark::RegisterBenchmark(
@@ -170,6 +194,23 @@ int run(int argc, char** argv) {
        << (pairs > 0 ? reportNumber(counterOf(ex, "filter_failures") / pairs) : "–") << " | "
        << (crossings > 0 ? reportNumber(counterOf(ex, "exact_constructions") / crossings) : "–")
        << " |\n";
+  }
+  md << "\n## Far from 1\n\n"
+     << "The exact variant on the same " << kMagnitudeSize
+     << "-gon pairs scaled by a power of two, medians of " << kRepetitions
+     << " interleaved repetitions. Near 1e-300 the filters' products fall below the normal range and "
+        "near 1e150 beyond it; the predicates scale their points towards 1 first (exactly), so the "
+        "same decisions are taken at the same stages.\n\n"
+     << "| coordinates | exact µs | / unit square | filter failures per candidate pair | decided by "
+        "expansions per candidate pair |\n|---|---|---|---|---|\n";
+  const BenchRow* unit = findRow(f, "magnitude/unit", kMagnitudeSize);
+  for (const Magnitude& m : kMagnitudes) {
+    const BenchRow* r = findRow(f, std::string("magnitude/") + m.name, kMagnitudeSize);
+    const double pairs = counterOf(r, "candidate_pairs");
+    md << "| " << m.label << " | " << (r ? timeRange(*r, 1000) : "–") << " | "
+       << (r && unit ? reportNumber(r->medianMs / unit->medianMs) : "–") << " | "
+       << (pairs > 0 ? reportNumber(counterOf(r, "filter_failures") / pairs) : "–") << " | "
+       << (pairs > 0 ? reportNumber(counterOf(r, "expansion_decisions") / pairs) : "–") << " |\n";
   }
   md << "\n## The construction of crossing points alone\n\n"
      << kCrossings

@@ -27,9 +27,18 @@ namespace gh::detail {
 // Smallest magnitude of a product made exact here (below it, the error may be lost).
 inline constexpr double kLeastExactProduct = 0x1p-900;
 
+// floor(log2 |x|) for finite nonzero x: from the exponent bits for normal numbers (no libm call:
+// the pair test asks for every candidate pair of a problem near 1e-300).
+inline int binaryExponent(double x) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int field = static_cast<int>((bits >> 52) & 0x7ff);
+  return field != 0 ? field - 1023 : std::ilogb(x);
+}
+
 // The power of two k that brings a largest magnitude below 1 into [1, 2): 0 when it is 0 or
 // already at least 1.
-inline int scaleUpExponent(double largest) { return largest > 0 && largest < 1 ? -std::ilogb(largest) : 0; }
+inline int scaleUpExponent(double largest) { return largest > 0 && largest < 1 ? -binaryExponent(largest) : 0; }
 
 // x * 2^k for k in [-1022, 1074], exactly while the result neither overflows nor leaves the
 // normal range (a multiplication by a power of two, in two steps when 2^k itself is beyond the
@@ -49,8 +58,8 @@ inline double timesPowerOfTwo(double x, int k) {
 // nonzero one out of the normal range (scaling down would then round it): 0 when there is none.
 inline int towardsUnitExponent(double largest, double smallestNonzero) {
   if (!(largest > 0) || (largest >= 1 && largest < 2)) return 0;
-  const int k = -std::ilogb(largest);
-  if (k < 0 && std::ilogb(smallestNonzero) + k < -1022) return 0;
+  const int k = -binaryExponent(largest);
+  if (k < 0 && binaryExponent(smallestNonzero) + k < -1022) return 0;
   return k;
 }
 
