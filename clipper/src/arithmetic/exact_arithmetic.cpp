@@ -44,17 +44,26 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
     return {};
   }
   // Each determinant is evaluated once: its sign (filtered, exact when needed) decides the
-  // crossing, and its value and bound give the crossing's position along the edge. Edges near
-  // 1e-300 or 1e150 are scaled together first: the determinants' bounds would be infinite and
-  // every order along the edges left to the exact predicates; no sign or position changes
-  // (difference_products.h), and the crossing point below is made from the originals.
-  Point s1 = p1, s2 = p2, t1 = q1, t2 = q2;
-  scaleTowardsUnit({&s1, &s2, &t1, &t2});
-  const FilteredDeterminant dP1 = orientationDeterminant(t1, t2, s1), dP2 = orientationDeterminant(t1, t2, s2);
-  const Sign oP1 = orientation(dP1, t1, t2, s1, *counters_), oP2 = orientation(dP2, t1, t2, s2, *counters_);
+  // crossing, and its value and bound give the crossing's position along the edge. Where a pair's
+  // bounds are infinite (products beyond the filter's range: coordinates near 1e-300 or 1e150),
+  // the pair is evaluated again on the four points scaled towards 1 together, which changes no
+  // sign nor the ratio of the pair (difference_products.h), so that the positions still have
+  // bounds and the order along the edges rarely needs the exact predicates; the crossing point
+  // below is made from the originals.
+  const auto determinants = [&](Point a, Point b, Point c, Point d, FilteredDeterminant& dc, FilteredDeterminant& dd,
+                                Sign& oc, Sign& od) {
+    dc = orientationDeterminant(a, b, c), dd = orientationDeterminant(a, b, d);
+    if (!(dc.bound < std::numeric_limits<double>::infinity()) || !(dd.bound < std::numeric_limits<double>::infinity())) {
+      scaleTowardsUnit({&a, &b, &c, &d});
+      dc = orientationDeterminant(a, b, c), dd = orientationDeterminant(a, b, d);
+    }
+    oc = orientation(dc, a, b, c, *counters_), od = orientation(dd, a, b, d, *counters_);
+  };
+  FilteredDeterminant dP1, dP2, dQ1, dQ2;
+  Sign oP1, oP2, oQ1, oQ2;
+  determinants(q1, q2, p1, p2, dP1, dP2, oP1, oP2);
   if (sos::clipEdgeSide(oP1, q1, q2) == sos::clipEdgeSide(oP2, q1, q2)) return {};
-  const FilteredDeterminant dQ1 = orientationDeterminant(s1, s2, t1), dQ2 = orientationDeterminant(s1, s2, t2);
-  const Sign oQ1 = orientation(dQ1, s1, s2, t1, *counters_), oQ2 = orientation(dQ2, s1, s2, t2, *counters_);
+  determinants(p1, p2, q1, q2, dQ1, dQ2, oQ1, oQ2);
   if (sos::subjectEdgeSide(oQ1, p1, p2) == sos::subjectEdgeSide(oQ2, p1, p2)) return {};
 
   x.subjectEdge = subjectEdge;
