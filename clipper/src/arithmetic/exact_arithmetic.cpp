@@ -31,6 +31,17 @@ double certifiedRatio(FilteredDeterminant w1, FilteredDeterminant w2, double& er
   return t;
 }
 
+// The determinants of c and d against the line ab again, on the four points scaled towards 1
+// together (difference_products.h): near 1e-300 or 1e150 the products fall outside the filter's
+// range and the bounds are infinite, so every order along the edges would need the exact
+// predicates. No sign changes, nor the ratio of the pair (a crossing's position); orientation()
+// still falls back on the original points. Out of line: the usual path stays as it was.
+[[gnu::noinline]] void determinantsTowardsUnit(Point a, Point b, Point c, Point d, FilteredDeterminant& dc,
+                                               FilteredDeterminant& dd) {
+  scaleTowardsUnit({&a, &b, &c, &d});
+  dc = orientationDeterminant(a, b, c), dd = orientationDeterminant(a, b, d);
+}
+
 }  // namespace
 
 PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge, const Operand& clip,
@@ -44,26 +55,15 @@ PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge
     return {};
   }
   // Each determinant is evaluated once: its sign (filtered, exact when needed) decides the
-  // crossing, and its value and bound give the crossing's position along the edge. Where a pair's
-  // bounds are infinite (products beyond the filter's range: coordinates near 1e-300 or 1e150),
-  // the pair is evaluated again on the four points scaled towards 1 together, which changes no
-  // sign nor the ratio of the pair (difference_products.h), so that the positions still have
-  // bounds and the order along the edges rarely needs the exact predicates; the crossing point
-  // below is made from the originals.
-  const auto determinants = [&](Point a, Point b, Point c, Point d, FilteredDeterminant& dc, FilteredDeterminant& dd,
-                                Sign& oc, Sign& od) {
-    dc = orientationDeterminant(a, b, c), dd = orientationDeterminant(a, b, d);
-    if (!(dc.bound < std::numeric_limits<double>::infinity()) || !(dd.bound < std::numeric_limits<double>::infinity())) {
-      scaleTowardsUnit({&a, &b, &c, &d});
-      dc = orientationDeterminant(a, b, c), dd = orientationDeterminant(a, b, d);
-    }
-    oc = orientation(dc, a, b, c, *counters_), od = orientation(dd, a, b, d, *counters_);
-  };
-  FilteredDeterminant dP1, dP2, dQ1, dQ2;
-  Sign oP1, oP2, oQ1, oQ2;
-  determinants(q1, q2, p1, p2, dP1, dP2, oP1, oP2);
+  // crossing, and its value and bound give the crossing's position along the edge. A pair whose
+  // bounds came out infinite (coordinates near 1e-300 or 1e150) is evaluated again towards 1.
+  FilteredDeterminant dP1 = orientationDeterminant(q1, q2, p1), dP2 = orientationDeterminant(q1, q2, p2);
+  if (!(std::max(dP1.bound, dP2.bound) < std::numeric_limits<double>::infinity())) determinantsTowardsUnit(q1, q2, p1, p2, dP1, dP2);
+  const Sign oP1 = orientation(dP1, q1, q2, p1, *counters_), oP2 = orientation(dP2, q1, q2, p2, *counters_);
   if (sos::clipEdgeSide(oP1, q1, q2) == sos::clipEdgeSide(oP2, q1, q2)) return {};
-  determinants(p1, p2, q1, q2, dQ1, dQ2, oQ1, oQ2);
+  FilteredDeterminant dQ1 = orientationDeterminant(p1, p2, q1), dQ2 = orientationDeterminant(p1, p2, q2);
+  if (!(std::max(dQ1.bound, dQ2.bound) < std::numeric_limits<double>::infinity())) determinantsTowardsUnit(p1, p2, q1, q2, dQ1, dQ2);
+  const Sign oQ1 = orientation(dQ1, p1, p2, q1, *counters_), oQ2 = orientation(dQ2, p1, p2, q2, *counters_);
   if (sos::subjectEdgeSide(oQ1, p1, p2) == sos::subjectEdgeSide(oQ2, p1, p2)) return {};
 
   x.subjectEdge = subjectEdge;
