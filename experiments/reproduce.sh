@@ -74,7 +74,7 @@ ROBUSTNESS_ARGS=()
 [[ "${GHCLIP_FULL:-0}" == 1 ]] && ROBUSTNESS_ARGS+=(--full)
 "$BIN/robustness" results "${ROBUSTNESS_ARGS[@]}"
 
-step "exact vs naive on 10^5 degenerate cases over 12 families -> results/exact-degenerate.md (about 27 minutes on one core)"
+step "exact vs naive on 10^5 degenerate cases over 12 families -> results/exact-degenerate.md (about 11 minutes on one core)"
 "$BIN/exact_degenerate" results 100000
 
 step "what exactness costs: exact vs naive on the paper's workload -> results/exact-speed.md (under a minute)"
