@@ -43,6 +43,33 @@ TEST(PointTable, MinusZeroIsZero) {
   EXPECT_EQ(value, 5);
 }
 
+// A table's slot array is kept for the thread's next table: the next starts empty, whatever the
+// last held and however large it grew, and both hold what they were given.
+TEST(PointTable, TheNextTableOnAThreadStartsEmpty) {
+  std::vector<Point> points;
+  for (int i = 0; i < 5000; ++i) points.push_back({i * 0.5, -i * 0.25});
+  {
+    PointTable<int> first;
+    for (int i = 0; i < 5000; ++i) first.findOrAdd(points[i]).first = i;
+  }
+  for (const std::size_t n : {std::size_t{10}, std::size_t{5000}, std::size_t{20000}}) {
+    PointTable<int> next;
+    EXPECT_EQ(next.size(), 0u);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point p = i < points.size() ? points[i] : Point{static_cast<double>(i), 7.0};
+      auto [value, fresh] = next.findOrAdd(p);
+      EXPECT_TRUE(fresh) << n << " " << i;
+      EXPECT_EQ(value, 0);
+      value = static_cast<int>(i) + 1;
+    }
+    EXPECT_EQ(next.size(), n);
+    for (std::size_t i = 0; i < n; i += 97) {
+      const Point p = i < points.size() ? points[i] : Point{static_cast<double>(i), 7.0};
+      EXPECT_EQ(next.findOrAdd(p).first, static_cast<int>(i) + 1);
+    }
+  }
+}
+
 // Slots are the hash's low bits, which a multiply-and-shift left alike for grid points: 9 of
 // 256 slots held the 9 x 9 integer grid.
 TEST(PointTable, HashSpreadsGridPointsOverTheSlots) {
