@@ -160,6 +160,14 @@ TEST(Options, AutoSearchTestsAllPairsOnRandomPolygonsAndSweepsCircles) {
   EXPECT_EQ(stats.candidatePairs, 1000u * 1000u);
 }
 
+// The region with every coordinate times 2^k (exact while nothing over- or underflows).
+Region scaledBy(Region r, int k) {
+  for (Ring& ring : r) {
+    for (Point& p : ring) p = {std::ldexp(p.x, k), std::ldexp(p.y, k)};
+  }
+  return r;
+}
+
 // The exact stages past the filter are counted: the pentagram's tip lies 6e-17 off the clip's
 // edge x = 0, and ordering the crossings along that edge needs exact arithmetic, in doubles at
 // this scale (or scaled down from 2^300), in rationals (GMP) at 2^300 with that edge moved to
@@ -171,18 +179,19 @@ TEST(Stats, CountTheExactFallbacks) {
   clip(c.subject, c.clip, Op::Intersection, {}, &stats);
   EXPECT_GT(stats.expansionDecisions, 0u);
   EXPECT_EQ(stats.filterFailures, 0u);
-  const auto scaled = [](Region r, bool moveZeros) {
-    for (Ring& ring : r) {
-      for (Point& p : ring) p = {moveZeros && p.x == 0 ? 0x1p-1000 : std::ldexp(p.x, 300), std::ldexp(p.y, 300)};
-    }
-    return r;
-  };
+  const Region farSubject = scaledBy(c.subject, 300), farClip = scaledBy(c.clip, 300);
   Stats far;
-  clip(scaled(c.subject, false), scaled(c.clip, false), Op::Intersection, {}, &far);
+  clip(farSubject, farClip, Op::Intersection, {}, &far);
   EXPECT_GT(far.expansionDecisions, 0u);
   EXPECT_EQ(far.filterFailures, 0u);
+  Region mixedClip = farClip;
+  for (Ring& ring : mixedClip) {
+    for (Point& p : ring) {
+      if (p.x == 0) p.x = 0x1p-1000;
+    }
+  }
   Stats mixed;
-  clip(scaled(c.subject, false), scaled(c.clip, true), Op::Intersection, {}, &mixed);
+  clip(farSubject, mixedClip, Op::Intersection, {}, &mixed);
   EXPECT_GT(mixed.filterFailures, 0u);
   Stats paper;
   clip(c.subject, c.clip, Op::Intersection, optionsOf(Variant::Naive), &paper);
@@ -199,19 +208,13 @@ TEST(Scale, FarFromOneTheExactArithmeticDecidesAsAtOne) {
   for (const auto& [workload, n] : cases) {
     const work::Workload w = work::generate(workload, n, 5);
     for (const int k : {-900, 400}) {
-      const auto scaled = [](Region r, int by) {
-        for (Ring& ring : r) {
-          for (Point& p : ring) p = {std::ldexp(p.x, by), std::ldexp(p.y, by)};
-        }
-        return r;
-      };
       for (Op op : {Op::Intersection, Op::Union}) {
         Stats unit, far;
         const Region a = clip(w.subject, w.clip, op, {}, &unit);
-        const Region b = clip(scaled(w.subject, k), scaled(w.clip, k), op, {}, &far);
+        const Region b = clip(scaledBy(w.subject, k), scaledBy(w.clip, k), op, {}, &far);
         EXPECT_EQ(far.expansionDecisions, unit.expansionDecisions) << workload << " 2^" << k;
         EXPECT_EQ(far.filterFailures, unit.filterFailures) << workload << " 2^" << k;
-        EXPECT_EQ(scaled(b, -k), a) << workload << " 2^" << k;
+        EXPECT_EQ(scaledBy(b, -k), a) << workload << " 2^" << k;
       }
     }
   }

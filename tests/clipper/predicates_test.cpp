@@ -20,10 +20,12 @@
 namespace gh::detail {
 namespace {
 
-int rationalOrientation(Point a, Point b, Point c) {
-  const mpq_class det = (mpq_class(b.x) - a.x) * (mpq_class(c.y) - a.y) - (mpq_class(b.y) - a.y) * (mpq_class(c.x) - a.x);
-  return sgn(det);
+// The sign of (b - a) x (d - c) in rationals.
+int rationalCross(Point a, Point b, Point c, Point d) {
+  return sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
 }
+
+int rationalOrientation(Point a, Point b, Point c) { return rationalCross(a, b, a, c); }
 
 mpq_class exactly(TwoTerm t) { return mpq_class(t.hi) + mpq_class(t.lo); }
 
@@ -100,9 +102,6 @@ TEST(Orientation, AgreesWithRationalsOnNearCollinearFixtures) {
 // ones: their rounded determinants have the wrong sign and exceed u*(|left| + |right|) by up to
 // 1.87 times, so only the whole of Shewchuk's stage-A bound, (3 + 16u)u, sends them on.
 TEST(CrossSign, AgreesWithRationalsOnNearCollinearFixtures) {
-  const auto rational = [](Point a, Point b, Point c, Point d) {
-    return sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
-  };
   ExactCounters counters;
   const Point found[][4] = {
       {{0x1.9d6fe69abdc2cp+0, 0x1.852c90919d5dap+0}, {0x1.532e8e11caf68p+3, 0x1.02d6f204d9e75p+3}, {-0x1.4205810ccf967p+2, -0x1.ab679ca3beab3p+1}, {0x1.36b5df688adp+4, 0x1.d12f40be2b8fap+3}},
@@ -116,8 +115,8 @@ TEST(CrossSign, AgreesWithRationalsOnNearCollinearFixtures) {
   };
   for (const auto& [a, b, c, d] : found) {
     const double left = (b.x - a.x) * (d.y - c.y), right = (b.y - a.y) * (d.x - c.x);
-    ASSERT_NE((left - right > 0) - (left - right < 0), rational(a, b, c, d));  // the doubles are wrong
-    EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), rational(a, b, c, d)) << a.x;
+    ASSERT_NE((left - right > 0) - (left - right < 0), rationalCross(a, b, c, d));  // the doubles are wrong
+    EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), rationalCross(a, b, c, d)) << a.x;
   }
   std::mt19937_64 rng(11);
   std::uniform_int_distribution<int> k(-64, 64);
@@ -128,7 +127,7 @@ TEST(CrossSign, AgreesWithRationalsOnNearCollinearFixtures) {
   };
   for (int i = 0; i < 20000; ++i) {
     const Point a = near(8), b = near(32), c = near(8), d = near(32);
-    EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), rational(a, b, c, d)) << i;
+    EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), rationalCross(a, b, c, d)) << i;
   }
   EXPECT_GT(counters.expansionDecisions, 0u);
 }
@@ -190,7 +189,7 @@ RC_GTEST_PROP(CrossSign, AgreesWithRationalsAtMixedMagnitudes, ()) {
   }
   RC_PRE(std::isfinite(d.x) && std::isfinite(d.y) && std::abs(d.x) <= 0x1p500 && std::abs(d.y) <= 0x1p500);
   ExactCounters counters;
-  const int exact = sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+  const int exact = rationalCross(a, b, c, d);
   RC_ASSERT(static_cast<int>(crossSign(a, b, c, d, counters)) == exact);
 }
 
@@ -201,7 +200,7 @@ RC_GTEST_PROP(CrossSign, AgreesWithRationalsAtMixedMagnitudes, ()) {
 TEST(CrossSign, AnErrorBoundThatUnderflowsDecidesNothing) {
   ExactCounters counters;
   const Point a{-0x1p-898, -0x1p-898}, b{-0x1p-556, -0x1p-343}, c{-0x1p-899, -0x1p-895}, d{-0x1p-556, -0x1p-343};
-  const int exact = sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+  const int exact = rationalCross(a, b, c, d);
   ASSERT_EQ(exact, -1);
   EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), exact);
   const Approx u = Approx(b.x) - Approx(a.x), v = Approx(d.y) - Approx(c.y);
@@ -218,7 +217,7 @@ RC_GTEST_PROP(CrossSign, DecidesSmallCoordinatesInDoubles, ()) {
   Point d{coord(), coord()};
   if (*rc::gen::arbitrary<bool>()) d = {c.x + 2 * (b.x - a.x), c.y + 2 * (b.y - a.y)};
   ExactCounters counters;
-  const int exact = sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+  const int exact = rationalCross(a, b, c, d);
   RC_ASSERT(static_cast<int>(crossSign(a, b, c, d, counters)) == exact);
   RC_ASSERT(counters.filterFailures == 0u);
 }
@@ -235,7 +234,7 @@ TEST(CrossSign, DecidesRandomTurnsAtSmallScalesInStageA) {
     for (int i = 0; i < n; ++i) {
       const auto p = [&] { return Point{std::ldexp(t(rng), e), std::ldexp(t(rng), e)}; };
       const Point a = p(), b = p(), c = p(), d = p();
-      const int exact = sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+      const int exact = rationalCross(a, b, c, d);
       ASSERT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), exact) << e << " " << i;
     }
     EXPECT_LT(counters.expansionDecisions + counters.filterFailures, n / 100u) << "2^" << e;
@@ -249,7 +248,7 @@ TEST(CrossSign, BoundsProductsTooSmallToMakeExact) {
   ExactCounters counters;
   const double big = 0x1p500, tiny = 0x1p-1070;
   const Point a{tiny, tiny}, b{big, 3 * tiny}, c{-tiny, 5 * tiny}, d{big, big};
-  const int exact = sgn((mpq_class(b.x) - a.x) * (mpq_class(d.y) - c.y) - (mpq_class(b.y) - a.y) * (mpq_class(d.x) - c.x));
+  const int exact = rationalCross(a, b, c, d);
   EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), exact);
   EXPECT_EQ(counters.filterFailures, 0u);
   // Everything computed cancels: what was left out could be all there is, so GMP decides. The

@@ -31,8 +31,6 @@ inline std::size_t exactSum(const double* terms, std::size_t count, double* out)
   return m;
 }
 
-inline Sign signOf(double x) { return toSign((x > 0) - (x < 0)); }
-
 template <std::size_t N>
 Sign signOfExactSum(const double (&terms)[N]) {
   double e[N];
