@@ -71,20 +71,67 @@ std::size_t bucket(double v, double lo, double hi, std::size_t n) {
   return static_cast<std::size_t>(f);
 }
 
-// A region's edges in horizontal bands, so that a ray test visits only the edges whose y-range
-// can hold the point's y (every other edge lies wholly above or below it and cannot count). The
-// band of a y is a monotone function of y, so an edge with ymin <= y <= ymax is always found.
-// A point right of its band's middle casts its ray to the right, one left of it to the left, so
-// that a test reads about half the band: under the half-open rule every ring crosses the point's
-// horizontal line an even number of times, so off the boundary both rays have the same parity.
-class EvenOddRegion {
+// Several regions' edges in horizontal bands, so that a ray test visits only the edges whose
+// y-range can hold the point's y (every other edge lies wholly above or below it and cannot
+// count). The band of a y is a monotone function of y, so an edge with ymin <= y <= ymax is always
+// found. A point right of its band's middle casts its ray to the right, one left of it to the
+// left, so that a test reads about half the band: under the half-open rule every ring crosses the
+// point's horizontal line an even number of times, so off the boundary both rays have the same
+// parity. Up to 64 regions are tested by one ray, each distinct segment once with a mask of the
+// regions it bounds: the five answers of a fuzz target share most of their edges (each piece of
+// S's and C's boundaries bounds about three of them), and S and C are tested together.
+class EvenOddRegions {
  public:
-  explicit EvenOddRegion(const Region& region) {
-    std::vector<Edge> edges;
-    for (const Ring& ring : region) {
-      for (std::size_t i = 0, n = ring.size(); i < n; ++i) edges.push_back(edgeOf(ring[i], ring[(i + 1) % n]));
+  static constexpr std::size_t kMost = 64;
+  struct Sides {
+    std::uint64_t inside = 0;    // bit i: the point is inside region i (where it is not on it)
+    std::uint64_t boundary = 0;  // bit i: the point lies on an edge of region i
+    // Region i's side: nullopt on its boundary (inside and outside are a convention there).
+    std::optional<bool> of(std::size_t i) const {
+      if (boundary >> i & 1) return std::nullopt;
+      return (inside >> i & 1) != 0;
     }
-    if (edges.empty()) return;
+  };
+
+  EvenOddRegions() = default;
+  explicit EvenOddRegions(const std::vector<const Region*>& regions) {
+    // Every edge (either way round, zero-length ones too), with the bit of its region; equal
+    // segments merged: `toggle` the regions that hold it an odd number of times (crossing it
+    // changes their parity), `present` every region that holds it.
+    struct Raw {
+      Point lo, hi;
+      std::uint64_t bit;
+    };
+    std::vector<Raw> raw;
+    for (std::size_t r = 0; r < regions.size() && r < kMost; ++r) {
+      for (const Ring& ring : *regions[r]) {
+        for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+          Point a = ring[i], b = ring[(i + 1) % n];
+          if (b.x < a.x || (b.x == a.x && b.y < a.y)) std::swap(a, b);
+          raw.push_back({a, b, std::uint64_t{1} << r});
+        }
+      }
+    }
+    if (raw.empty()) return;
+    // A strict weak order even with NaNs (after every number; equal to each other): a wrong
+    // answer may hold anything.
+    auto less = [](double u, double v) { return std::isnan(v) ? !std::isnan(u) : u < v; };
+    auto before = [&](const Raw& u, const Raw& v) {
+      const double uk[4] = {u.lo.x, u.lo.y, u.hi.x, u.hi.y}, vk[4] = {v.lo.x, v.lo.y, v.hi.x, v.hi.y};
+      for (int i = 0; i < 4; ++i) {
+        if (less(uk[i], vk[i])) return true;
+        if (less(vk[i], uk[i])) return false;
+      }
+      return false;
+    };
+    std::sort(raw.begin(), raw.end(), before);
+    std::vector<Edge> edges;
+    for (std::size_t i = 0; i < raw.size();) {
+      Edge e = edgeOf(raw[i].lo, raw[i].hi);
+      e.toggle = e.present = raw[i].bit;
+      for (++i; i < raw.size() && raw[i].lo == e.a && raw[i].hi == e.b; ++i) e.toggle ^= raw[i].bit, e.present |= raw[i].bit;
+      edges.push_back(e);
+    }
     minY_ = maxY_ = edges[0].a.y;
     for (const Edge& e : edges) {
       minY_ = std::min({minY_, e.a.y, e.b.y}), maxY_ = std::max({maxY_, e.a.y, e.b.y});
@@ -120,10 +167,10 @@ class EvenOddRegion {
     }
   }
 
-  // Even-odd parity of a ray from p, exactly; nullopt when p lies on an edge (on the boundary,
-  // inside and outside are a convention, not an answer).
-  std::optional<bool> inside(Point p) const {
-    if (rightward_.empty() || !(p.y >= minY_ && p.y <= maxY_)) return false;
+  // Even-odd parity of a ray from p for every region at once, exactly, and the regions on whose
+  // edges p lies.
+  Sides inside(Point p) const {
+    if (rightward_.empty() || !(p.y >= minY_ && p.y <= maxY_)) return {};
     const std::size_t k = band(p.y);
     return p.x >= middle_[k] ? parity<true>(p, rightward_.data() + start_[k], rightward_.data() + start_[k + 1])
                              : parity<false>(p, leftward_.data() + start_[k], leftward_.data() + start_[k + 1]);
@@ -133,13 +180,15 @@ class EvenOddRegion {
   struct Edge {
     Point a, b;
     double minX, maxX;
+    std::uint64_t toggle = 0, present = 0;
   };
   static Edge edgeOf(Point a, Point b) { return {a, b, std::min(a.x, b.x), std::max(a.x, b.x)}; }
 
-  // The parity of the edges in [first, last) that cross p's horizontal line on the ray's side of p.
+  // The parities of the edges in [first, last) that cross p's horizontal line on the ray's side
+  // of p, and the edges p lies on.
   template <bool kToTheRight>
-  static std::optional<bool> parity(Point p, const Edge* first, const Edge* last) {
-    bool in = false;
+  static Sides parity(Point p, const Edge* first, const Edge* last) {
+    Sides sides;
     for (const Edge* e = first; e != last; ++e) {
       if (kToTheRight ? p.x > e->maxX : p.x < e->minX) break;  // this edge and all after it lie behind p
       const Point& a = e->a;
@@ -149,16 +198,19 @@ class EvenOddRegion {
       const bool within = p.x >= e->minX && p.x <= e->maxX;
       if (!crosses && !within) continue;
       if (crosses && !within) {  // wholly on the ray's side of p: no orientation needed
-        in = !in;
+        sides.inside ^= e->toggle;
         continue;
       }
       const int o = orientation(a, b, p);
-      if (o == 0) return std::nullopt;  // within its x-range and on its line: on the edge
+      if (o == 0) {  // within its x-range and on its line: on the edge
+        sides.boundary |= e->present;
+        continue;
+      }
       // The edge crosses p's horizontal line to the right of p when p is on its left going
       // upward (on its right going downward); to the left of p in the other two cases.
-      if (crosses && ((b.y > a.y ? o > 0 : o < 0) == kToTheRight)) in = !in;
+      if (crosses && ((b.y > a.y ? o > 0 : o < 0) == kToTheRight)) sides.inside ^= e->toggle;
     }
-    return in;
+    return sides;
   }
 
   std::size_t band(double y) const { return bucket(y, minY_, maxY_, bands_); }
@@ -984,7 +1036,7 @@ class Sampler {
   // when S and C are both empty).
   Sampler(const Region& subject, const Region& clip, const Box& box, const SampleOptions& options, double ulpFloor)
       : options_(options), box_(box), subject_(subject), clip_(clip),
-        operandEdges_(subject, clip, options.constructionUlps, ulpFloor), inS_(subject), inC_(clip),
+        operandEdges_(subject, clip, options.constructionUlps, ulpFloor), operands_({&subject, &clip}),
         operandGrid_(operandEdges_.segments()) {
     std::size_t vertices = 0;
     for (const Region* r : {&subject, &clip}) {
@@ -1013,19 +1065,37 @@ class Sampler {
     std::vector<SampleVerdict> verdicts(n);
     if (empty() || n == 0) return verdicts;
     ++epoch_;
-    std::vector<EvenOddRegion> inR;
     std::vector<Box> reach(n, box_);  // S, C and each answer
     std::vector<double> slack(n);
-    inR.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       reach[i].grow(answers[i].result);
       slack[i] = slackOf(reach[i]);
-      inR.emplace_back(answers[i].result);
     }
+    // The answers' sides, by one ray per point for each group of up to 64 answers.
+    std::vector<EvenOddRegions> inR;
+    for (std::size_t first = 0; first < n; first += EvenOddRegions::kMost) {
+      std::vector<const Region*> group;
+      for (std::size_t i = first; i < n && i < first + EvenOddRegions::kMost; ++i) group.push_back(&answers[i].result);
+      inR.emplace_back(group);
+    }
+    // A point's sides of every answer, each group's ray cast when first asked for (near a
+    // vertex, most answers' sides follow from the rays there: RaysFrom).
+    struct AnswerSides {
+      std::vector<EvenOddRegions::Sides> groups;
+      std::vector<char> known;
+    } point;
+    point.groups.resize(inR.size()), point.known.resize(inR.size());
+    auto forget = [&] { std::fill(point.known.begin(), point.known.end(), 0); };
+    auto sideIn = [&](std::size_t i, Point p) {
+      const std::size_t g = i / EvenOddRegions::kMost;
+      if (!point.known[g]) point.groups[g] = inR[g].inside(p), point.known[g] = 1;
+      return point.groups[g].of(i % EvenOddRegions::kMost);
+    };
     auto sideOf = [&](std::size_t i, Point p, std::uint8_t state) {
-      return (state & kSkipped) ? std::nullopt : inR[i].inside(p);
+      return (state & kSkipped) ? std::nullopt : sideIn(i, p);
     };
     for (const auto& [p, state] : uniform_) {
+      forget();
       for (std::size_t i = 0; i < n; ++i) judge(verdicts[i], answers[i].op, p, state, sideOf(i, p, state));
     }
     // An answer reaching beyond S and C's box (a wrong one, or the paper arithmetic's, whose
@@ -1036,6 +1106,7 @@ class Sampler {
       forUniformPoints(reach[i], mixBits(options_.seed ^ 0xB0C5B0C5B0C5B0C5ull), options_.uniformPoints, [&](Point p) {
         if (box_.holds(p)) return;
         const std::uint8_t state = sides(p);
+        forget();
         judge(verdicts[i], answers[i].op, p, state, sideOf(i, p, state));
       });
     }
@@ -1052,10 +1123,11 @@ class Sampler {
         if (known.epoch == epoch_) return known.judged;  // judged in this check already
         known.epoch = epoch_;
         bool all = !(known.state & kSkipped);
+        forget();
         for (std::size_t i = 0; i < n; ++i) {
           std::optional<bool> side;
           if (!(known.state & kSkipped)) {
-            side = rays_[i].holds(p, radius) ? rays_[i].side(p, [&] { return inR[i].inside(p); }) : inR[i].inside(p);
+            side = rays_[i].holds(p, radius) ? rays_[i].side(p, [&] { return sideIn(i, p); }) : sideIn(i, p);
           }
           all &= judge(verdicts[i], answers[i].op, p, known.state, side);
         }
@@ -1230,7 +1302,8 @@ class Sampler {
   // kSkipped when p is within the delta of an edge of S or C, or on one; else its sides.
   std::uint8_t sides(Point p) {
     if (operandEdges_.near(p)) return kSkipped;
-    const auto a = inS_.inside(p), b = inC_.inside(p);
+    const EvenOddRegions::Sides both = operands_.inside(p);
+    const auto a = both.of(0), b = both.of(1);
     if (!a || !b) return kSkipped;
     return static_cast<std::uint8_t>((*a ? kInS : 0) | (*b ? kInC : 0));
   }
@@ -1250,7 +1323,7 @@ class Sampler {
   const Region& subject_;
   const Region& clip_;
   OperandEdges operandEdges_;
-  EvenOddRegion inS_, inC_;
+  EvenOddRegions operands_;  // S (region 0) and C (region 1)
   SegmentGrid operandGrid_;
   double extent_ = 0;
   std::uint32_t epoch_ = 0;

@@ -579,6 +579,40 @@ TEST(SamplingOracle, EverySectorAroundAVertexIsJudged) {
   }
 }
 
+// The answers' sides come from one ray per point for all of them, each distinct segment once
+// with the answers it bounds. An edge an answer holds twice (two rings along one segment, or one
+// ring there and back) changes nothing for that answer, and a point on it is on that answer's
+// boundary, whatever the other answers that share the segment hold. Judged together and alone,
+// right answers pass and the wrong ones fail.
+TEST(SamplingOracle, AnswersSharingAndDoublingEdgesAreJudgedEachByItsOwnRings) {
+  const Region s = io::readWkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  const Region c = io::readWkt("POLYGON((1 0,3 0,3 1,1 1,1 0))");
+  // The union as the two rings, their shared edge held twice (once each way): right. (Off the
+  // middle of the x-range, so that rays from points on either side of it cross it.)
+  const Region twoSquares = io::readWkt("MULTIPOLYGON(((0 0,1 0,1 1,0 1,0 0)),((1 0,3 0,3 1,1 1,1 0)))");
+  // The intersection (the operands only touch) as a ring there and back along the shared edge,
+  // and as nothing: both right.
+  const Region seam = io::readWkt("POLYGON((1 0,1 1,1 0))");
+  const Region square = io::readWkt("POLYGON((0 0,1 0,1 1,0 1,0 0))");
+  const Region nothing;
+  // The union missing the right square, with the shared edge twice in one ring: wrong.
+  const Region leftOnly = io::readWkt("POLYGON((0 0,1 0,1 1,1 0,1 1,0 1,0 0))");
+  oracle::SampleOptions options;
+  options.uniformPoints = 200;
+  const std::vector<std::pair<Op, const Region*>> all = {
+      {Op::Union, &twoSquares}, {Op::Intersection, &seam},     {Op::Intersection, &nothing},
+      {Op::Difference, &square}, {Op::ReverseDifference, &c}, {Op::Xor, &twoSquares},
+      {Op::Union, &leftOnly},   {Op::Difference, &twoSquares}};
+  const std::vector<bool> right = {true, true, true, true, true, true, false, false};
+  oracle::SamplingJudge judge(s, c, options);
+  const auto together = judge.check(all);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    EXPECT_EQ(together[i].pass(), right[i]) << i;
+    EXPECT_EQ(oracle::sampleCheck(s, c, all[i].first, *all[i].second, options).pass(), right[i]) << i;
+    EXPECT_EQ(oracle::exactCheck(s, c, all[i].first, *all[i].second).pass, right[i]) << i;
+  }
+}
+
 // A fuzz input: (6 6) is the tip of a spike of S with edges 6 long, and a vertex of the paper
 // arithmetic's union with edges 1 to 1.7 long. That union is wrong beyond rounding (the exact
 // oracle), and the sampling oracle sees it on the spike's bisector 1.5 below the tip (a quarter
