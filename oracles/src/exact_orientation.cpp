@@ -1,5 +1,7 @@
 #include "ghoracle/exact_orientation.h"
 
+#include "filtered_orientation.h"
+
 #include <gmp.h>
 
 #include <cmath>
@@ -99,8 +101,10 @@ IntegerOrientation& integerStage() {
   return integer;
 }
 
-// Out of line: the filter that decides nearly every call stays a small function.
-[[gnu::noinline]] int orientationBeyondFilter(Point a, Point b, Point p) {
+}  // namespace
+
+// Out of line (filtered_orientation.h): the filter that decides nearly every call stays small.
+int orientationBeyondFilter(Point a, Point b, Point p) {
   // Where the filter cannot decide, the points are usually collinear on a coarse grid: the
   // differences and products are then exact doubles, and the sign is their comparison.
   double bx, py, by, px, el, er;
@@ -110,8 +114,6 @@ IntegerOrientation& integerStage() {
   }
   return integerStage().sign(a, b, p);
 }
-
-}  // namespace
 
 bool crossAtMost(Point a, Point b, Point p, double bound) {
   // Collinear or nearly collinear grid points: the differences, the products and their
@@ -125,13 +127,6 @@ bool crossAtMost(Point a, Point b, Point p, double bound) {
   return integerStage().atMost(a, b, p, bound);
 }
 
-int orientation(Point a, Point b, Point p) {
-  const double l = (b.x - a.x) * (p.y - a.y), r = (b.y - a.y) * (p.x - a.x);
-  const double det = l - r, magnitude = std::abs(l) + std::abs(r);
-  if (std::isfinite(magnitude) && magnitude > 0x1p-900 && std::abs(det) > 0x1.0000000000002p-51 * magnitude) {
-    return det > 0 ? 1 : -1;
-  }
-  return orientationBeyondFilter(a, b, p);
-}
+int orientation(Point a, Point b, Point p) { return filteredOrientation(a, b, p); }
 
 }  // namespace gh::oracle

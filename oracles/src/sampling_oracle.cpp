@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ghoracle/exact_orientation.h"
+#include "filtered_orientation.h"
 #include "judging_scale.h"
 #include "mix_bits.h"
 #include "point_table.h"
@@ -69,6 +70,37 @@ std::size_t bucket(double v, double lo, double hi, std::size_t n) {
   if (!(f > 0)) return 0;
   if (!(f < static_cast<double>(n))) return n - 1;  // before the conversion: inf does not fit
   return static_cast<std::size_t>(f);
+}
+
+// The cells of a uniform grid (side x side over [x0, x1] x [y0, y1], cells by bucket()) that a
+// point within `widen` of the segment ab can fall in, a row at a time: f(row, first, last) for
+// the columns first..last, within the rows and columns of the segment's box widened so. In each
+// row only the columns between the segment's ends in that row (the row widened too, with a
+// margin for the rounding of its bounds and of the ends, far above it), not the box's whole
+// width: a long diagonal edge meets a few cells of each row, and its box most of the grid. Where
+// that cannot be computed (a horizontal or vertical segment, overflow), the box's columns.
+template <class F>
+void forCellsNear(Point a, Point b, double widen, double x0, double x1, double y0, double y1, std::size_t side, F&& f) {
+  const std::size_t firstRow = bucket(std::min(a.y, b.y) - widen, y0, y1, side), lastRow = bucket(std::max(a.y, b.y) + widen, y0, y1, side);
+  const std::size_t firstColumn = bucket(std::min(a.x, b.x) - widen, x0, x1, side), lastColumn = bucket(std::max(a.x, b.x) + widen, x0, x1, side);
+  const double dx = b.x - a.x, dy = b.y - a.y, rowHeight = (y1 - y0) / static_cast<double>(side);
+  const double rowMargin = 0x1p-30 * (std::abs(y0) + std::abs(y1) + rowHeight);
+  const double columnMargin = widen + 0x1p-30 * (std::abs(a.x) + std::abs(b.x) + std::abs(dx));
+  const bool along = firstRow != lastRow && firstColumn != lastColumn && dy != 0 && std::isfinite(dx / dy) &&
+                     std::isfinite(rowHeight) && std::isfinite(rowMargin) && std::isfinite(columnMargin);
+  for (std::size_t row = firstRow; row <= lastRow; ++row) {
+    std::size_t first = firstColumn, last = lastColumn;
+    if (along) {
+      const double ya = std::max(y0 + static_cast<double>(row) * rowHeight - widen - rowMargin, std::min(a.y, b.y));
+      const double yb = std::min(y0 + static_cast<double>(row + 1) * rowHeight + widen + rowMargin, std::max(a.y, b.y));
+      const double xa = a.x + (ya - a.y) / dy * dx, xb = a.x + (yb - a.y) / dy * dx;
+      if (std::isfinite(xa) && std::isfinite(xb) && ya <= yb) {
+        first = std::max(first, bucket(std::min(xa, xb) - columnMargin, x0, x1, side));
+        last = std::min(last, bucket(std::max(xa, xb) + columnMargin, x0, x1, side));
+      }
+    }
+    f(row, first, last);
+  }
 }
 
 // Several regions' edges in horizontal bands, so that a ray test visits only the edges whose
@@ -201,7 +233,7 @@ class EvenOddRegions {
         sides.inside ^= e->toggle;
         continue;
       }
-      const int o = orientation(a, b, p);
+      const int o = filteredOrientation(a, b, p);
       if (o == 0) {  // within its x-range and on its line: on the edge
         sides.boundary |= e->present;
         continue;
@@ -351,9 +383,9 @@ class OperandEdges {
     double largest = 0;
     for (const Edge& o : edges_) {
       if (&o == &e) continue;
-      const int oa = orientation(e.a, e.b, o.a), ob = orientation(e.a, e.b, o.b);
+      const int oa = filteredOrientation(e.a, e.b, o.a), ob = filteredOrientation(e.a, e.b, o.b);
       if (oa * ob >= 0) continue;
-      const int ea = orientation(o.a, o.b, e.a), eb = orientation(o.a, o.b, e.b);
+      const int ea = filteredOrientation(o.a, o.b, e.a), eb = filteredOrientation(o.a, o.b, e.b);
       if (ea * eb >= 0) continue;
       largest = std::max(largest, std::min(magnitude(e.a, e.b), magnitude(o.a, o.b)));
     }
@@ -361,8 +393,12 @@ class OperandEdges {
   }
 
   // A uniform grid over the edges' boxes, each widened by its coarse delta: an edge is listed
-  // in every cell its widened box meets, and a point's cell (clamped to the grid, by the same
-  // monotone function) lists every edge whose widened box holds it.
+  // in every cell that a point within its coarse delta of it can fall in, and a point's cell
+  // (clamped to the grid, by the same monotone function) lists every edge it is that near. In
+  // each row of cells its box meets, an edge is listed in the cells between its line's ends in
+  // that row (the row widened by the delta and a margin for the rounding of the row's bounds and
+  // of the ends, which is far above it), not in its box's whole width: the long diagonal edges
+  // of a fuzz input's rings were listed in most cells, and near() read them for every point.
   std::size_t axis(double v, double lo, double hi) const { return bucket(v, lo, hi, side_); }
   std::size_t cell(double x, double y) const { return axis(y, y0_, y1_) * side_ + axis(x, x0_, x1_); }
   void index() {
@@ -375,26 +411,24 @@ class OperandEdges {
       x0_ = std::min(x0_, boxes.back().x0), x1_ = std::max(x1_, boxes.back().x1);
       y0_ = std::min(y0_, boxes.back().y0), y1_ = std::max(y1_, boxes.back().y1);
     }
-    auto copies = [&] {
-      std::size_t n = 0;
-      for (const Box& b : boxes) n += (axis(b.x1, x0_, x1_) - axis(b.x0, x0_, x1_) + 1) * (axis(b.y1, y0_, y1_) - axis(b.y0, y0_, y1_) + 1);
-      return n;
+    auto forCells = [&](const Edge& e, auto&& f) {
+      forCellsNear(e.a, e.b, e.coarse, x0_, x1_, y0_, y1_, side_, [&](std::size_t row, std::size_t first, std::size_t last) {
+        for (std::size_t column = first; column <= last; ++column) f(row * side_ + column);
+      });
     };
-    // About one cell per 2 edges, fewer while long edges would be copied into too many cells.
-    for (side_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(edges_.size() / 2.0)), 1, 1024);
-         side_ > 1 && copies() > 16 * edges_.size(); side_ /= 2) {
+    // About eight cells per edge, fewer while the edges would be listed more than 32 times each
+    // on average.
+    for (side_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(edges_.size() * 8.0)), 1, 1024);; side_ /= 2) {
+      std::size_t copies = 0;
+      for (const Edge& e : edges_) forCells(e, [&](std::size_t) { ++copies; });
+      if (side_ == 1 || copies <= 32 * edges_.size()) break;
     }
     start_.assign(side_ * side_ + 1, 0);
-    auto forCells = [&](const Box& b, auto&& f) {
-      for (std::size_t cy = axis(b.y0, y0_, y1_), ly = axis(b.y1, y0_, y1_); cy <= ly; ++cy) {
-        for (std::size_t cx = axis(b.x0, x0_, x1_), lx = axis(b.x1, x0_, x1_); cx <= lx; ++cx) f(cy * side_ + cx);
-      }
-    };
-    for (const Box& b : boxes) forCells(b, [&](std::size_t k) { ++start_[k + 1]; });
+    for (const Edge& e : edges_) forCells(e, [&](std::size_t k) { ++start_[k + 1]; });
     for (std::size_t k = 0; k + 1 < start_.size(); ++k) start_[k + 1] += start_[k];
     members_.resize(start_.back());
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (std::uint32_t i = 0; i < boxes.size(); ++i) forCells(boxes[i], [&](std::size_t k) { members_[fill[k]++] = {boxes[i], i}; });
+    for (std::uint32_t i = 0; i < boxes.size(); ++i) forCells(edges_[i], [&](std::size_t k) { members_[fill[k]++] = {boxes[i], i}; });
   }
 
   int ulps_;
@@ -550,7 +584,7 @@ class SegmentGrid {
     if (!std::isfinite(d) || !std::isfinite(t) || (squared <= 0x1p-1000 && squared != 0)) return {0.0, false, false};
     // A segment through q (a crossing of the operands that is a vertex of the answer) is two
     // rays from q, as good as two edges ending there: decided exactly.
-    if (d <= 0x1p-40 * length(dx, dy) * 2 && t > 0 && t < 1 && orientation(a, b, q) == 0) return {endDistance(q, s), false, true};
+    if (d <= 0x1p-40 * length(dx, dy) * 2 && t > 0 && t < 1 && filteredOrientation(a, b, q) == 0) return {endDistance(q, s), false, true};
     return {d, t > 0 && t < 1, false};
   }
   // From q to the nearer end of s, in halves.
@@ -565,23 +599,28 @@ class SegmentGrid {
       x0_ = std::min({x0_, a.x, b.x}), x1_ = std::max({x1_, a.x, b.x});
       y0_ = std::min({y0_, a.y, b.y}), y1_ = std::max({y1_, a.y, b.y});
     }
-    auto copies = [&] {
-      std::size_t n = 0;
-      for (const auto& [a, b] : segments_) n += span(a, b);
-      return n;
+    // A segment is listed in the cells it passes through (forCellsNear), so a walk over the cells
+    // near q meets every segment that comes near q. About eight cells per segment, fewer while the
+    // segments would be listed more than 32 times each on average.
+    auto forSegmentCells = [&](const std::pair<Point, Point>& segment, auto&& f) {
+      forCellsNear(segment.first, segment.second, 0.0, x0_, x1_, y0_, y1_, side_, [&](std::size_t row, std::size_t first, std::size_t last) {
+        for (std::size_t column = first; column <= last; ++column) f(row * side_ + column);
+      });
     };
-    for (side_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(segments_.size() / 2.0)), 1, 256);
-         side_ > 1 && copies() > 16 * segments_.size(); side_ /= 2) {
+    for (side_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(segments_.size() / 2.0)), 1, 256);; side_ /= 2) {
+      std::size_t copies = 0;
+      for (const auto& segment : segments_) forSegmentCells(segment, [&](std::size_t) { ++copies; });
+      if (side_ == 1 || copies <= 32 * segments_.size()) break;
     }
     start_.assign(side_ * side_ + 1, 0);
-    for (const auto& [a, b] : segments_) forCells(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), [&](std::size_t k) { ++start_[k + 1]; });
+    for (const auto& segment : segments_) forSegmentCells(segment, [&](std::size_t k) { ++start_[k + 1]; });
     for (std::size_t k = 0; k + 1 < start_.size(); ++k) start_[k + 1] += start_[k];
     members_.resize(start_.back());
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
     for (std::uint32_t i = 0; i < segments_.size(); ++i) {
       const auto& [a, b] = segments_[i];
       const Member box{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), i};
-      forCells(box.x0, box.x1, box.y0, box.y1, [&](std::size_t k) { members_[fill[k]++] = box; });
+      forSegmentCells(segments_[i], [&](std::size_t k) { members_[fill[k]++] = box; });
     }
   }
   std::size_t axis(double v, double lo, double hi) const { return bucket(v, lo, hi, side_); }
@@ -637,9 +676,9 @@ bool touches(Point p, Point q, Point a, Point b) {
       std::max(p.y, q.y) < std::min(a.y, b.y) || std::max(a.y, b.y) < std::min(p.y, q.y)) {
     return false;
   }
-  const int op = orientation(a, b, p), oq = orientation(a, b, q);
+  const int op = filteredOrientation(a, b, p), oq = filteredOrientation(a, b, q);
   if (op == oq && op != 0) return false;  // p and q strictly on one side of ab's line
-  const int oa = orientation(p, q, a), ob = orientation(p, q, b);
+  const int oa = filteredOrientation(p, q, a), ob = filteredOrientation(p, q, b);
   return !(oa == ob && oa != 0);
 }
 
@@ -672,7 +711,7 @@ class RaysFrom {
         before += endHalf < h;
         continue;
       }
-      const int o = orientation(q_, end, p);
+      const int o = filteredOrientation(q_, end, p);
       if (o == 0) return std::nullopt;  // p's direction: p lies on that edge
       before += o > 0;
     }
@@ -866,7 +905,7 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
         before += endHalf < h;
         continue;
       }
-      const int o = orientation(q, end, p);
+      const int o = filteredOrientation(q, end, p);
       if (o == 0) return std::nullopt;
       before += o > 0;
     }
