@@ -6,13 +6,16 @@
 #include <gmpxx.h>
 #include <rapidcheck/gtest.h>
 
+#include <optional>
 #include <random>
+#include <vector>
 
 #include "arithmetic/exact_arithmetic.h"
 #include "predicates/approx.h"
 #include "predicates/error_free.h"
 #include "predicates/even_odd_ray.h"
 #include "predicates/filtered_predicate.h"
+#include "predicates/integer_stage.h"
 #include "predicates/orientation.h"
 #include "predicates/segment_meeting.h"
 #include "predicates/sos_predicates.h"
@@ -60,28 +63,78 @@ TEST(CertainSign, DecidesOnlyWhatTheBoundDecides) {
   EXPECT_EQ(certainSign(NAN, 1.0), std::nullopt);
 }
 
-// The helper runs the filter stage, and the exact stage only when a sign it needed was not
-// certain, counting it.
-TEST(FilteredPredicate, FallsBackOnlyWhenUncertainAndCounts) {
+// The helper runs the filter stage; only when a sign it needed was not certain the stage in
+// doubles, counted as an expansion decision; only when that gives nothing the exact stage,
+// counted as a filter failure.
+TEST(FilteredPredicate, GoesOnOnlyWhenUncertainAndCounts) {
   ExactCounters counters;
-  int stages = 0;
-  auto predicate = [&](double a, double b) {
+  int filters = 0, inDoubles = 0, exacts = 0;
+  auto predicate = [&](double a, double b, std::optional<Sign> decidedInDoubles) {
     return filteredPredicate(
         [&](auto numbers) {
           using N = typename decltype(numbers)::Number;
-          ++stages;
+          ++filters;
           const N d = N(a) * N(b) - N(1);
           return numbers.sign(d);
         },
+        [&] {
+          ++inDoubles;
+          return decidedInDoubles;
+        },
+        [&] {
+          ++exacts;
+          return toSign(sgn(mpq_class(a) * b - 1));
+        },
         counters);
   };
-  EXPECT_EQ(predicate(2, 3), Sign::Positive);
-  EXPECT_EQ(stages, 1);
-  EXPECT_EQ(counters.filterFailures, 0u);
+  EXPECT_EQ(predicate(2, 3, std::nullopt), Sign::Positive);
+  EXPECT_EQ(filters, 1);
+  EXPECT_EQ(inDoubles + exacts, 0);
   // 1/3 rounded times 3 is 1 - 2^-54 exactly: tiny, but the filter's bound covers it.
-  EXPECT_EQ(predicate(1.0 / 3, 3), toSign(sgn(mpq_class(1.0 / 3) * 3 - 1)));
+  const Sign truth = toSign(sgn(mpq_class(1.0 / 3) * 3 - 1));
+  EXPECT_EQ(predicate(1.0 / 3, 3, truth), truth);
+  EXPECT_EQ(inDoubles, 1);
+  EXPECT_EQ(exacts, 0);
+  EXPECT_EQ(counters.expansionDecisions, 1u);
+  EXPECT_EQ(counters.filterFailures, 0u);
+  EXPECT_EQ(predicate(1.0 / 3, 3, std::nullopt), truth);
+  EXPECT_EQ(exacts, 1);
   EXPECT_EQ(counters.filterFailures, 1u);
-  EXPECT_EQ(stages, 3);
+}
+
+// A coordinate for the integer stage: zero, or any finite double from the subnormals to 2^1000,
+// either sign, often a few ulps off a small integer or a power of two.
+double integerStageCoordinate() {
+  switch (*rc::gen::inRange(0, 4)) {
+    case 0: return 0.0;
+    case 1: {
+      double x = *rc::gen::inRange(-8, 9);
+      for (int k = *rc::gen::inRange(-3, 4); k != 0; k += k > 0 ? -1 : 1) x = std::nextafter(x, k > 0 ? 9.0 : -9.0);
+      return x;  // near 0 these are subnormal
+    }
+    case 2: return std::ldexp(*rc::gen::inRange(-(1 << 20), 1 << 20), *rc::gen::inRange(-1074, 980));
+    default: {
+      const double x = std::ldexp(1.0 + std::ldexp(*rc::gen::inRange(0, 1 << 30), -30), *rc::gen::inRange(-1074, 980));
+      return *rc::gen::arbitrary<bool>() ? -x : x;
+    }
+  }
+}
+
+// The integer stage against rationals, over every magnitude a double has (subnormals beside
+// 2^980 in one predicate, where the stages in doubles give up), exact zeros included (points
+// repeated): the cross product's sign and the SoS order's F0.
+RC_GTEST_PROP(IntegerStage, AgreesWithRationalsAtEveryMagnitude, ()) {
+  std::vector<Point> pool;
+  for (int i = 0; i < 4; ++i) pool.push_back({integerStageCoordinate(), integerStageCoordinate()});
+  const auto point = [&] { return pool[static_cast<std::size_t>(*rc::gen::inRange(0, 4))]; };
+  const Point a = point(), b = point(), c = point(), d = point();
+  RC_ASSERT(static_cast<int>(integerCrossSign(a, b, c, d)) == rationalCross(a, b, c, d));
+  const Point m1 = point(), m2 = point(), n1 = point(), n2 = point();
+  const mpq_class mx = mpq_class(m2.x) - m1.x, my = mpq_class(m2.y) - m1.y, nx = mpq_class(n2.x) - n1.x, ny = mpq_class(n2.y) - n1.y;
+  const mpq_class ax = mpq_class(a.x) - b.x, ay = mpq_class(a.y) - b.y;
+  const mpq_class aM = mx * (mpq_class(a.y) - m1.y) - my * (mpq_class(a.x) - m1.x);
+  const mpq_class aN = nx * (mpq_class(a.y) - n1.y) - ny * (mpq_class(a.x) - n1.x);
+  RC_ASSERT(static_cast<int>(integerOrderTerm(a, b, m1, m2, n1, n2)) == sgn(aM * (nx * ay - ny * ax) - aN * (mx * ay - my * ax)));
 }
 
 // Near-collinear points on a 2^-43 grid around a line: the classic failure of double orientation.

@@ -1,21 +1,18 @@
 // The one filtered-predicate helper of the library, as CGAL's Filtered_predicate: a predicate is
-// written once, generically over a number policy, and run first with floating-point values that
-// carry a certified error bound (Approx), then, only if some sign it needed was not certain, with
-// exact rationals (GMP), counted as a filter failure; optionally with a stage exact in doubles
-// between the two.
+// written generically over a number policy and run first with floating-point values that carry a
+// certified error bound (Approx); only if some sign it needed was not certain, a stage exact in
+// doubles (counted as an expansion decision), and where that cannot decide, the exact stage in
+// integers (integer_stage.h), counted as a filter failure.
 //
 //   Sign s = filteredPredicate([&](auto numbers) -> std::optional<Sign> {
 //     using N = typename decltype(numbers)::Number;
 //     const N d = (N(b.x) - N(a.x)) * (N(c.y) - N(a.y)) - ...;
 //     return numbers.sign(d);   // empty: not certain at this stage
-//   }, counters);
+//   }, inDoubles, exact, counters);
 //
 // A predicate that needs several signs asks for them one at a time and returns empty as soon as
 // one is uncertain, so terms that are never needed are never decided.
-// Include only from .cpp files: it brings in gmpxx.
 #pragma once
-
-#include <gmpxx.h>
 
 #include <optional>
 
@@ -31,30 +28,17 @@ struct FilterNumbers {
   static std::optional<Sign> sign(const Approx& a) { return certainSign(a); }
 };
 
-// Exact rationals (doubles convert exactly): every sign is certain.
-struct ExactNumbers {
-  using Number = mpq_class;
-  static std::optional<Sign> sign(const mpq_class& q) { return toSign(sgn(q)); }
-};
-
-template <class Predicate>
-auto filteredPredicate(Predicate&& predicate, ExactCounters& counters) {
+// inDoubles() gives the sign exactly in doubles where it can (difference_products.h), or nothing;
+// exact() always gives it.
+template <class Predicate, class InDoubles, class Exact>
+auto filteredPredicate(Predicate&& predicate, InDoubles&& inDoubles, Exact&& exact, ExactCounters& counters) {
   if (auto quick = predicate(FilterNumbers{})) return *quick;
-  ++counters.filterFailures;
-  return *predicate(ExactNumbers{});
-}
-
-// The same with a stage between the filter and GMP: inDoubles() gives the sign exactly in doubles
-// where it can (difference_products.h), counted as an expansion decision, or nothing.
-template <class Predicate, class InDoubles>
-auto filteredPredicate(Predicate&& predicate, InDoubles&& inDoubles, ExactCounters& counters) {
-  if (auto quick = predicate(FilterNumbers{})) return *quick;
-  if (auto exact = inDoubles()) {
+  if (auto decided = inDoubles()) {
     ++counters.expansionDecisions;
-    return *exact;
+    return *decided;
   }
   ++counters.filterFailures;
-  return *predicate(ExactNumbers{});
+  return exact();
 }
 
 }  // namespace gh::detail

@@ -7,6 +7,7 @@
 #include "predicates/difference_products.h"
 #include "predicates/expansion.h"
 #include "predicates/filtered_predicate.h"
+#include "predicates/integer_stage.h"
 
 namespace gh::detail {
 
@@ -72,7 +73,7 @@ Sign crossSign(Point a, Point b, Point c, Point d, ExactCounters& counters) {
     return *s;
   }
   ++counters.filterFailures;
-  return *approximate(ExactNumbers{});
+  return integerCrossSign(a, b, c, d);
 }
 
 Sign orientationExact(Point a, Point b, Point c, ExactCounters& counters) {

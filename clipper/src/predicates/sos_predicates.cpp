@@ -7,6 +7,7 @@
 #include "predicates/difference_products.h"
 #include "predicates/even_odd_ray.h"
 #include "predicates/filtered_predicate.h"
+#include "predicates/integer_stage.h"
 #include "predicates/orientation.h"
 
 namespace gh::detail::sos {
@@ -78,7 +79,8 @@ int compare(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2, int bSig
           const N value = aM * cross(nx, ny, ax, ay) - aN * cross(mx, my, ax, ay);
           return numbers.sign(value);
         },
-        [&] { return f0InDoubles(a1, a2, m1, m2, n1, n2); }, counters);
+        [&] { return f0InDoubles(a1, a2, m1, m2, n1, n2); }, [&] { return integerOrderTerm(a1, a2, m1, m2, n1, n2); },
+        counters);
     if (f0 != Sign::Zero) return static_cast<int>(f0) * denominator;
   }
   const int x = static_cast<int>(crossSign(m1, m2, n1, n2, counters));
