@@ -8,7 +8,7 @@
 namespace gh::detail {
 
 struct ExactCounters {
-  std::uint64_t filterFailures = 0;      // predicates decided in rational arithmetic (GMP)
+  std::uint64_t filterFailures = 0;      // predicates decided in GMP integers (integer_stage.h)
   std::uint64_t expansionDecisions = 0;  // predicates past the filter, decided exactly in doubles
   std::uint64_t exactConstructions = 0;  // crossing points rounded from rationals
 
