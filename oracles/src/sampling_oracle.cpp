@@ -103,6 +103,41 @@ void forCellsNear(Point a, Point b, double widen, double x0, double x1, double y
   }
 }
 
+// n segments listed in the cells of a uniform grid, in compressed rows: the grid's side chosen
+// from `initial` down, halving, until the segments are listed at most 32 times each on average;
+// then start (each cell's first listing, one past the last cell's at the end) and members
+// (member(i) in every cell of segment i). cells(i, side, f) calls f(cell) for each cell of
+// segment i on a grid of that side. Returns the side.
+template <class Member, class Cells, class MakeMember>
+std::size_t listInCells(std::size_t n, std::size_t initial, Cells&& cells, MakeMember&& member,
+                        std::vector<std::size_t>& start, std::vector<Member>& members) {
+  std::size_t side = std::max<std::size_t>(initial, 1);
+  for (;; side /= 2) {
+    std::size_t copies = 0;
+    for (std::size_t i = 0; i < n; ++i) cells(i, side, [&](std::size_t) { ++copies; });
+    if (side == 1 || copies <= 32 * n) break;
+  }
+  start.assign(side * side + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) cells(i, side, [&](std::size_t k) { ++start[k + 1]; });
+  for (std::size_t k = 0; k + 1 < start.size(); ++k) start[k + 1] += start[k];
+  members.resize(start.back());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Member m = member(i);
+    cells(i, side, [&](std::size_t k) { members[fill[k]++] = m; });
+  }
+  return side;
+}
+
+// The cells of a grid of `side` over [x0, x1] x [y0, y1] near segment ab (forCellsNear), each as
+// f(cell).
+template <class F>
+void forEachCellNear(Point a, Point b, double widen, double x0, double x1, double y0, double y1, std::size_t side, F&& f) {
+  forCellsNear(a, b, widen, x0, x1, y0, y1, side, [&](std::size_t row, std::size_t first, std::size_t last) {
+    for (std::size_t column = first; column <= last; ++column) f(row * side + column);
+  });
+}
+
 // Several regions' edges in horizontal bands, so that a ray test visits only the edges whose
 // y-range can hold the point's y (every other edge lies wholly above or below it and cannot
 // count). The band of a y is a monotone function of y, so an edge with ymin <= y <= ymax is always
@@ -411,24 +446,14 @@ class OperandEdges {
       x0_ = std::min(x0_, boxes.back().x0), x1_ = std::max(x1_, boxes.back().x1);
       y0_ = std::min(y0_, boxes.back().y0), y1_ = std::max(y1_, boxes.back().y1);
     }
-    auto forCells = [&](const Edge& e, auto&& f) {
-      forCellsNear(e.a, e.b, e.coarse, x0_, x1_, y0_, y1_, side_, [&](std::size_t row, std::size_t first, std::size_t last) {
-        for (std::size_t column = first; column <= last; ++column) f(row * side_ + column);
-      });
-    };
     // About eight cells per edge, fewer while the edges would be listed more than 32 times each
     // on average.
-    for (side_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(edges_.size() * 8.0)), 1, 1024);; side_ /= 2) {
-      std::size_t copies = 0;
-      for (const Edge& e : edges_) forCells(e, [&](std::size_t) { ++copies; });
-      if (side_ == 1 || copies <= 32 * edges_.size()) break;
-    }
-    start_.assign(side_ * side_ + 1, 0);
-    for (const Edge& e : edges_) forCells(e, [&](std::size_t k) { ++start_[k + 1]; });
-    for (std::size_t k = 0; k + 1 < start_.size(); ++k) start_[k + 1] += start_[k];
-    members_.resize(start_.back());
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (std::uint32_t i = 0; i < boxes.size(); ++i) forCells(edges_[i], [&](std::size_t k) { members_[fill[k]++] = {boxes[i], i}; });
+    side_ = listInCells(
+        edges_.size(), std::min<std::size_t>(static_cast<std::size_t>(std::sqrt(edges_.size() * 8.0)), 1024),
+        [&](std::size_t i, std::size_t side, auto&& f) {
+          forEachCellNear(edges_[i].a, edges_[i].b, edges_[i].coarse, x0_, x1_, y0_, y1_, side, f);
+        },
+        [&](std::size_t i) { return Member{boxes[i], static_cast<std::uint32_t>(i)}; }, start_, members_);
   }
 
   int ulps_;
@@ -600,40 +625,20 @@ class SegmentGrid {
       y0_ = std::min({y0_, a.y, b.y}), y1_ = std::max({y1_, a.y, b.y});
     }
     // A segment is listed in the cells it passes through (forCellsNear), so a walk over the cells
-    // near q meets every segment that comes near q. About eight cells per segment, fewer while the
-    // segments would be listed more than 32 times each on average.
-    auto forSegmentCells = [&](const std::pair<Point, Point>& segment, auto&& f) {
-      forCellsNear(segment.first, segment.second, 0.0, x0_, x1_, y0_, y1_, side_, [&](std::size_t row, std::size_t first, std::size_t last) {
-        for (std::size_t column = first; column <= last; ++column) f(row * side_ + column);
-      });
-    };
-    for (side_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::sqrt(segments_.size() / 2.0)), 1, 256);; side_ /= 2) {
-      std::size_t copies = 0;
-      for (const auto& segment : segments_) forSegmentCells(segment, [&](std::size_t) { ++copies; });
-      if (side_ == 1 || copies <= 32 * segments_.size()) break;
-    }
-    start_.assign(side_ * side_ + 1, 0);
-    for (const auto& segment : segments_) forSegmentCells(segment, [&](std::size_t k) { ++start_[k + 1]; });
-    for (std::size_t k = 0; k + 1 < start_.size(); ++k) start_[k + 1] += start_[k];
-    members_.resize(start_.back());
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (std::uint32_t i = 0; i < segments_.size(); ++i) {
-      const auto& [a, b] = segments_[i];
-      const Member box{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), i};
-      forSegmentCells(segments_[i], [&](std::size_t k) { members_[fill[k]++] = box; });
-    }
+    // near q meets every segment that comes near q. About one cell per two segments, fewer while
+    // the segments would be listed more than 32 times each on average.
+    side_ = listInCells(
+        segments_.size(), std::min<std::size_t>(static_cast<std::size_t>(std::sqrt(segments_.size() / 2.0)), 256),
+        [&](std::size_t i, std::size_t side, auto&& f) {
+          forEachCellNear(segments_[i].first, segments_[i].second, 0.0, x0_, x1_, y0_, y1_, side, f);
+        },
+        [&](std::size_t i) {
+          const auto& [a, b] = segments_[i];
+          return Member{std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y), static_cast<std::uint32_t>(i)};
+        },
+        start_, members_);
   }
   std::size_t axis(double v, double lo, double hi) const { return bucket(v, lo, hi, side_); }
-  std::size_t span(Point a, Point b) const {
-    return (axis(std::max(a.x, b.x), x0_, x1_) - axis(std::min(a.x, b.x), x0_, x1_) + 1) *
-           (axis(std::max(a.y, b.y), y0_, y1_) - axis(std::min(a.y, b.y), y0_, y1_) + 1);
-  }
-  template <class F>
-  void forCells(double x0, double x1, double y0, double y1, F&& f) const {
-    for (std::size_t cy = axis(y0, y0_, y1_), ly = axis(y1, y0_, y1_); cy <= ly; ++cy) {
-      for (std::size_t cx = axis(x0, x0_, x1_), lx = axis(x1, x0_, x1_); cx <= lx; ++cx) f(cy * side_ + cx);
-    }
-  }
   // The cells of the box q +- cap, in rings around q's cell, nearest first, while a ring can hold
   // a point within reach() of q: every point of a cell k rings out lies more than k - 1 cell
   // widths from q (q's cell is the one q is clamped to, by the same monotone function).
