@@ -81,8 +81,22 @@ bool insideEvenOdd(const Region& region, Point p) {
 
 double evenOddArea(const Region& region) {
   requireFinite(region, "the region");
-  std::vector<Segment> segs;
-  std::vector<double> xs;
+  // Scratch kept per thread: the invariant judges measure every answer of every fuzz execution,
+  // and a dozen growing vectors per call cost more than the sweep on their small regions.
+  struct Active {
+    const Segment* segment;
+    double y0, y1;  // its heights at the slab's boundaries (y0: computed as the last slab's y1)
+  };
+  struct Scratch {
+    std::vector<Segment> segs;
+    std::vector<double> xs;
+    std::vector<Active> active;
+    std::vector<std::pair<double, std::size_t>> spanning;  // (height at the middle, place in active)
+  };
+  thread_local Scratch scratch;
+  std::vector<Segment>& segs = scratch.segs;
+  std::vector<double>& xs = scratch.xs;
+  segs.clear(), xs.clear();
   for (const Ring& ring : region) {
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
       Point a = ring[i], b = ring[(i + 1) % n];
@@ -108,26 +122,37 @@ double evenOddArea(const Region& region) {
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
 
+  // Slab by slab, the segments spanning it ordered by their height at its middle and paired off.
+  // A segment's height at a boundary is computed once, at the slab it closes, and reused as the
+  // next slab's left one (the same division: the same bits).
   double area = 0;
-  std::vector<const Segment*> active;
-  std::vector<std::pair<double, const Segment*>> spanning;
+  std::vector<Active>& active = scratch.active;
+  std::vector<std::pair<double, std::size_t>>& spanning = scratch.spanning;
+  active.clear();
   std::size_t nextSeg = 0;
   for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
     const double x0 = xs[k], x1 = xs[k + 1], xm = (x0 + x1) / 2;
-    while (nextSeg < segs.size() && segs[nextSeg].a.x <= x0) active.push_back(&segs[nextSeg++]);
-    active.erase(std::remove_if(active.begin(), active.end(),
-                                [x0](const Segment* s) { return s->b.x <= x0; }),
+    active.erase(std::remove_if(active.begin(), active.end(), [x0](const Active& s) { return s.segment->b.x <= x0; }),
                  active.end());
+    // Entering segments go after the ones still active, in the order they were sorted in: the
+    // order of equal heights below follows this order.
+    while (nextSeg < segs.size() && segs[nextSeg].a.x <= x0) {
+      const Segment& s = segs[nextSeg++];
+      if (s.b.x > x0) active.push_back({&s, s.yAt(x0), 0});
+    }
     spanning.clear();
-    for (const Segment* s : active) spanning.emplace_back(s->yAt(xm), s);
-    std::sort(spanning.begin(), spanning.end(),
-              [](const auto& u, const auto& v) { return u.first < v.first; });
+    for (std::size_t i = 0; i < active.size(); ++i) {
+      active[i].y1 = active[i].segment->yAt(x1);
+      spanning.emplace_back(active[i].segment->yAt(xm), i);
+    }
+    std::sort(spanning.begin(), spanning.end(), [](const auto& u, const auto& v) { return u.first < v.first; });
     for (std::size_t i = 0; i + 1 < spanning.size(); i += 2) {
-      const Segment& lo = *spanning[i].second;
-      const Segment& hi = *spanning[i + 1].second;
-      const double h0 = hi.yAt(x0) - lo.yAt(x0), h1 = hi.yAt(x1) - lo.yAt(x1);
+      const Active& lo = active[spanning[i].second];
+      const Active& hi = active[spanning[i + 1].second];
+      const double h0 = hi.y0 - lo.y0, h1 = hi.y1 - lo.y1;
       area += (h0 + h1) / 2 * (x1 - x0);
     }
+    for (Active& s : active) s.y0 = s.y1;
   }
   return area;
 }
