@@ -15,6 +15,7 @@
 #include "judging_scale.h"
 #include "mix_bits.h"
 #include "point_table.h"
+#include "pooled_vector.h"
 #include "ulp.h"
 
 namespace gh::oracle {
@@ -121,7 +122,7 @@ std::size_t listInCells(std::size_t n, std::size_t initial, Cells&& cells, MakeM
   for (std::size_t i = 0; i < n; ++i) cells(i, side, [&](std::size_t k) { ++start[k + 1]; });
   for (std::size_t k = 0; k + 1 < start.size(); ++k) start[k + 1] += start[k];
   members.resize(start.back());
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  PooledVector<std::size_t> fill(start.begin(), start.end() - 1);
   for (std::size_t i = 0; i < n; ++i) {
     const Member m = member(i);
     cells(i, side, [&](std::size_t k) { members[fill[k]++] = m; });
@@ -169,7 +170,7 @@ class EvenOddRegions {
       Point lo, hi;
       std::uint64_t bit;
     };
-    std::vector<Raw> raw;
+    PooledVector<Raw> raw;
     for (std::size_t r = 0; r < regions.size() && r < kMost; ++r) {
       for (const Ring& ring : *regions[r]) {
         for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
@@ -192,7 +193,7 @@ class EvenOddRegions {
       return false;
     };
     std::sort(raw.begin(), raw.end(), before);
-    std::vector<Edge> edges;
+    PooledVector<Edge> edges;
     for (std::size_t i = 0; i < raw.size();) {
       Edge e = edgeOf(raw[i].lo, raw[i].hi);
       e.toggle = e.present = raw[i].bit;
@@ -218,7 +219,7 @@ class EvenOddRegions {
     // from the rightmost right end leftwards (a ray to the right stops at the first edge wholly
     // left of its point, as every edge after it is) and from the leftmost left end rightwards.
     rightward_.resize(start_[bands_]);
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    PooledVector<std::size_t> fill(start_.begin(), start_.end() - 1);
     for (const Edge& e : edges) {
       for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) rightward_[fill[k]++] = e;
     }
@@ -283,9 +284,9 @@ class EvenOddRegions {
   std::size_t band(double y) const { return bucket(y, minY_, maxY_, bands_); }
   double minY_ = 0, maxY_ = 0;
   std::size_t bands_ = 1;
-  std::vector<std::size_t> start_;
-  std::vector<Edge> rightward_, leftward_;  // each band's edges, by right end down, by left end up
-  std::vector<double> middle_;              // per band: rays from points left of it go left
+  PooledVector<std::size_t> start_;
+  PooledVector<Edge> rightward_, leftward_;  // each band's edges, by right end down, by left end up
+  PooledVector<double> middle_;              // per band: rays from points left of it go left
 };
 
 // The edges of S and C, with what a point near one needs to know: how far from it a correct
@@ -324,8 +325,8 @@ class OperandEdges {
   }
 
   // The edges, in order (edges of zero length left out: they cut nothing).
-  std::vector<std::pair<Point, Point>> segments() const {
-    std::vector<std::pair<Point, Point>> out;
+  PooledVector<std::pair<Point, Point>> segments() const {
+    PooledVector<std::pair<Point, Point>> out;
     for (const Edge& e : edges_) out.push_back({e.a, e.b});
     return out;
   }
@@ -438,7 +439,7 @@ class OperandEdges {
   std::size_t cell(double x, double y) const { return axis(y, y0_, y1_) * side_ + axis(x, x0_, x1_); }
   void index() {
     if (edges_.empty()) return;
-    std::vector<Box> boxes;
+    PooledVector<Box> boxes;
     x0_ = y0_ = std::numeric_limits<double>::infinity(), x1_ = y1_ = -x0_;
     for (const Edge& e : edges_) {
       boxes.push_back({std::min(e.a.x, e.b.x) - e.coarse, std::max(e.a.x, e.b.x) + e.coarse,
@@ -460,11 +461,11 @@ class OperandEdges {
   double ulpFloor_;
   double largest_ = 0;
   double largestCoarse_ = 0;
-  std::vector<Edge> edges_;
+  PooledVector<Edge> edges_;
   double x0_ = 0, x1_ = 0, y0_ = 0, y1_ = 0;
   std::size_t side_ = 1;
-  std::vector<std::size_t> start_;
-  std::vector<Member> members_;  // each cell's edges, with their widened boxes (read in order)
+  PooledVector<std::size_t> start_;
+  PooledVector<Member> members_;  // each cell's edges, with their widened boxes (read in order)
 };
 
 // The phase of the eight directions around a vertex: a function of the vertex and the seed
@@ -499,13 +500,13 @@ class SegmentGrid {
     }
     index();
   }
-  explicit SegmentGrid(std::vector<std::pair<Point, Point>> segments) : segments_(std::move(segments)) { index(); }
+  explicit SegmentGrid(PooledVector<std::pair<Point, Point>> segments) : segments_(std::move(segments)) { index(); }
 
   // The segments near a point q: those that pass through q or are counted so, and up to
   // kNearest others, the nearest; and the clearance of all the rest.
   static constexpr std::size_t kNearest = 4;
   struct Nearest {
-    std::vector<std::uint32_t> segments;  // each once
+    PooledVector<std::uint32_t> segments;  // each once
     double beyond = 0;                    // no other segment comes nearer q (0: cannot tell)
   };
 
@@ -664,15 +665,15 @@ class SegmentGrid {
       }
     }
   }
-  std::vector<std::pair<Point, Point>> segments_;
+  PooledVector<std::pair<Point, Point>> segments_;
   double x0_ = 0, x1_ = 0, y0_ = 0, y1_ = 0;
   std::size_t side_ = 1;
-  std::vector<std::size_t> start_;
+  PooledVector<std::size_t> start_;
   struct Member {  // a segment listed in a cell, with its box (the cells are read in order)
     double x0, x1, y0, y1;
     std::uint32_t segment;
   };
-  std::vector<Member> members_;
+  PooledVector<Member> members_;
 };
 
 // Whether the segments pq and ab share a point (cross, touch or overlap), decided exactly.
@@ -735,7 +736,7 @@ class RaysFrom {
 
   Point q_{};
   double radius_ = -1;
-  std::vector<std::pair<Point, int>> ends_;
+  PooledVector<std::pair<Point, int>> ends_;
   bool referenced_ = false, referenceSide_ = false;
   std::size_t referenceBefore_ = 0;
 };
@@ -1011,7 +1012,7 @@ struct SampleAnswer {
 // with the answers it is an edge of (an answer once per edge of it there): the exact variant's
 // five answers share most of their edges.
 class AnswerSegments {
-  std::vector<std::uint32_t> start_, answers_;  // answers_[start_[e] .. start_[e + 1]): segment e's;
+  PooledVector<std::uint32_t> start_, answers_;  // answers_[start_[e] .. start_[e + 1]): segment e's;
                                                 // made by distinct(), so declared before the grid
 
  public:
@@ -1028,12 +1029,12 @@ class AnswerSegments {
   const SegmentGrid grid;
 
  private:
-  std::vector<std::pair<Point, Point>> distinct(const std::vector<SampleAnswer>& answers) {
+  PooledVector<std::pair<Point, Point>> distinct(const std::vector<SampleAnswer>& answers) {
     struct Edge {
       Point a, b;  // a before b (by x, then y)
       std::uint32_t answer;
     };
-    std::vector<Edge> edges;
+    PooledVector<Edge> edges;
     for (std::uint32_t k = 0; k < answers.size(); ++k) {
       for (const Ring& ring : answers[k].result) {
         for (std::size_t i = 0, m = ring.size(); i < m; ++i) {
@@ -1047,7 +1048,7 @@ class AnswerSegments {
     std::sort(edges.begin(), edges.end(), [&](const Edge& e, const Edge& f) {
       return key(e) < key(f) || (key(e) == key(f) && e.answer < f.answer);
     });
-    std::vector<std::pair<Point, Point>> segments;
+    PooledVector<std::pair<Point, Point>> segments;
     start_.push_back(0);
     for (std::size_t i = 0; i < edges.size(); ++i) {
       if (i > 0 && key(edges[i]) == key(edges[i - 1])) {
@@ -1207,7 +1208,16 @@ class Sampler {
       for (const SampleAnswer& answer : answers) {
         for (const Ring& ring : answer.result) gather(ring, false);
       }
-      std::stable_sort(cornersAt_.begin(), cornersAt_.end(), [](const Corner& a, const Corner& b) { return a.vertex < b.vertex; });
+      // Grouped by vertex, in the order gathered within each: a counting sort (stable, as
+      // stable_sort was, without the buffer it took for every check).
+      {
+        PooledVector<std::size_t> next(vertices_.size() + 1, 0);
+        for (const Corner& c : cornersAt_) ++next[c.vertex + 1];
+        for (std::size_t v = 0; v < vertices_.size(); ++v) next[v + 1] += next[v];
+        PooledVector<Corner> grouped(cornersAt_.size());
+        for (const Corner& c : cornersAt_) grouped[next[c.vertex]++] = c;
+        cornersAt_.swap(grouped);
+      }
       for (std::size_t first = 0, last; first < cornersAt_.size(); first = last) {
         for (last = first + 1; last < cornersAt_.size() && cornersAt_[last].vertex == cornersAt_[first].vertex; ++last) {
         }
@@ -1354,7 +1364,7 @@ class Sampler {
 
   struct NearOperands {
     double cap = -1, beyond = 0;                 // the wider clearance below cap from S and C's edges
-    std::vector<std::pair<Point, Point>> edges;  // the edges it leaves out
+    PooledVector<std::pair<Point, Point>> edges;  // the edges it leaves out
   };
   struct CachedClearance {
     double cap = -1, value = 0;           // clearanceBelow(cap) from S and C's edges
@@ -1371,15 +1381,15 @@ class Sampler {
   SegmentGrid operandGrid_;
   double extent_ = 0;
   std::uint32_t epoch_ = 0;
-  std::vector<std::pair<Point, std::uint8_t>> uniform_;
+  PooledVector<std::pair<Point, std::uint8_t>> uniform_;
   PointTable<Known> known_;
   std::vector<CachedClearance> operandClearance_;  // per vertex of S, then of C
-  std::vector<std::uint32_t> atQ_;                 // scratch: the answer's edges at a vertex
-  std::vector<std::pair<Point, Point>> nearest_;   // scratch: the edges near a vertex (S, C, answer)
+  PooledVector<std::uint32_t> atQ_;                 // scratch: the answer's edges at a vertex
+  PooledVector<std::pair<Point, Point>> nearest_;   // scratch: the edges near a vertex (S, C, answer)
   SegmentGrid::Nearest nearScratch_;               // scratch
   NearOperands operandScratch_;                    // scratch: an answer vertex's wider clearance from S and C
   std::vector<RaysFrom> rays_;                     // each answer's edges near the vertex sampled
-  std::vector<double> strictByAnswer_;             // scratch: each answer's clearance from the vertex
+  PooledVector<double> strictByAnswer_;             // scratch: each answer's clearance from the vertex
   struct VertexAt {
     Point q;
     std::int64_t operand;  // its place in operandClearance_ (an S or C vertex's), or -1
@@ -1388,11 +1398,11 @@ class Sampler {
     std::uint32_t vertex;  // its place in vertices_
     Point prev, next;      // its neighbours on its ring
   };
-  std::vector<VertexAt> vertices_;                       // scratch: the vertices of S, C and the answers
+  PooledVector<VertexAt> vertices_;                       // scratch: the vertices of S, C and the answers
   PointTable<std::uint32_t> vertexIndex_;                // scratch: their places in vertices_
-  std::vector<Corner> cornersAt_;                        // scratch: every corner of every ring
-  std::vector<std::pair<Point, Point>> corners_;         // scratch: one vertex's distinct corners
-  std::vector<Point> fan_;                         // scratch: the far ends of the edges through a vertex
+  PooledVector<Corner> cornersAt_;                        // scratch: every corner of every ring
+  PooledVector<std::pair<Point, Point>> corners_;         // scratch: one vertex's distinct corners
+  PooledVector<Point> fan_;                         // scratch: the far ends of the edges through a vertex
 };
 
 Box boxOf(std::initializer_list<const Region*> regions) {
