@@ -102,7 +102,8 @@ class CleanUp {
     return crossSign(at, a, at, b, counters_) == Sign::Positive;
   }
 
-  Region dissolveSeams(const Region& region) const;
+  // rings (none empty) -> out, flat both.
+  void dissolveSeams(const FlatRings& rings, FlatRings& out) const;
 
  private:
   ExactCounters& counters_;
@@ -236,8 +237,8 @@ class EdgeGrid {
 // squares sharing an edge). Each pair bounds nothing: split collinear overlaps at each other's
 // endpoints, cancel opposite pairs, and chain what is left into rings again, so that the union of
 // two squares sharing an edge is one rectangle.
-Region CleanUp::dissolveSeams(const Region& region) const {
-  const Operand op(region);
+void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
+  const Operand op(rings.points, rings.start);
   // The endpoints of every edge, numbered, and the edges at each.
   PointNumbers numbers(op.size());
   std::vector<std::uint32_t> fromNumber(op.size()), toNumber(op.size());
@@ -372,17 +373,17 @@ Region CleanUp::dissolveSeams(const Region& region) const {
     }
   });
   std::vector<char> used(kept.size(), 0);
-  Region out;
+  out.points.clear(), out.start.assign(1, 0);
+  out.points.reserve(kept.size());
   for (std::size_t start = 0; start < kept.size(); ++start) {
     if (used[start]) continue;
-    Ring ring;
     std::size_t cur = start;
     bool reversed = false;  // the current piece is walked from its end to its start
     for (std::size_t guard = 0; guard <= kept.size(); ++guard) {
       used[cur] = 1;
       const auto& piece = pieces[kept[cur]];
       const Point from = reversed ? piece.second : piece.first, at = reversed ? piece.first : piece.second;
-      ring.push_back(from);
+      out.points.push_back(from);
       const std::uint32_t atNumber = reversed ? pieceFrom[kept[cur]] : pieceTo[kept[cur]];
       std::size_t best = kept.size();
       bool bestReversed = false;
@@ -396,9 +397,8 @@ Region CleanUp::dissolveSeams(const Region& region) const {
       if (best == kept.size()) break;  // back at the start (its piece is used)
       cur = best, reversed = bestReversed;
     }
-    out.push_back(std::move(ring));
+    out.closeRing();
   }
-  return out;
 }
 
 }  // namespace
@@ -426,9 +426,13 @@ Region cleanedUp(FlatRings& rings, bool dissolve, ExactCounters& counters) {
   // shape of the exact arithmetic's seams), which costs one hash pass otherwise. Rings that touch
   // only along a T-junction keep their seam; their even-odd interior is right either way.
   if (!dissolve || !anyVertexRepeats(points)) return rings.toRegion();
+  FlatRings walked;
+  cleanUp.dissolveSeams(rings, walked);
   Region dissolved;
-  for (Ring& ring : cleanUp.dissolveSeams(rings.toRegion())) {
-    cleanUp.simplify(ring);
+  dissolved.reserve(walked.size());
+  for (std::size_t r = 0; r < walked.size(); ++r) {
+    Point* first = walked.points.data() + walked.start[r];
+    Ring ring(first, cleanUp.simplify(first, walked.points.data() + walked.start[r + 1]));
     cleanUp.dropStraightVertices(ring);
     if (ring.size() >= 3) dissolved.push_back(std::move(ring));
   }

@@ -27,6 +27,13 @@ Operand::Operand(const Region& region) {
   ringStart.push_back(static_cast<std::uint32_t>(vertices.size()));
 }
 
+Operand::Operand(const std::vector<Point>& points, const std::vector<std::uint32_t>& ringStarts)
+    : vertices(points), next(points.size()), ringStart(ringStarts) {
+  for (std::size_t k = 0; k + 1 < ringStart.size(); ++k) {
+    for (std::uint32_t v = ringStart[k]; v < ringStart[k + 1]; ++v) next[v] = v + 1 < ringStart[k + 1] ? v + 1 : ringStart[k];
+  }
+}
+
 Operand::Operand(const Region& region, bool dropBadRings) {
   std::size_t total = 0;
   for (const Ring& ring : region) total += ring.size();

@@ -20,6 +20,8 @@ struct Operand {
   // Validates while copying, with normalized()'s rules: drops consecutive duplicates and the
   // closing vertex, throws InvalidInput (or drops the ring) like normalized() does.
   Operand(const Region& region, bool dropBadRings);
+  // Rings already flat: ring k is points[ringStarts[k] .. ringStarts[k + 1]) (none empty).
+  Operand(const std::vector<Point>& points, const std::vector<std::uint32_t>& ringStarts);
 
   std::size_t ringCount() const { return ringStart.size() - 1; }
   std::size_t size() const { return vertices.size(); }
