@@ -1295,13 +1295,14 @@ class Sampler {
                             answersClearance);
           }
           if (cached->cap != cap) {
-            cached->cap = cap, cached->through.clear();
+            cached->cap = cap, cached->throughFirst = throughs_.size();
             cached->value = operandGrid_.clearance(q, cap, passesNear(rounding), nullptr, nullptr, nullptr,
                                                    [&](std::uint32_t e, double, bool through) {
-                                                     if (through) cached->through.push_back(e);
+                                                     if (through) throughs_.push_back(e);
                                                    });
+            cached->throughLast = throughs_.size();
           }
-          for (std::uint32_t e : cached->through) addToFan(operandGrid_.segment(e));
+          for (std::size_t k = cached->throughFirst; k < cached->throughLast; ++k) addToFan(operandGrid_.segment(throughs_[k]));
           return std::min(cached->value, answersClearance);
         };
         // The clearance without the edges near q, which it gathers in nearest_.
@@ -1364,11 +1365,13 @@ class Sampler {
 
   struct NearOperands {
     double cap = -1, beyond = 0;                 // the wider clearance below cap from S and C's edges
-    PooledVector<std::pair<Point, Point>> edges;  // the edges it leaves out
+    std::vector<std::pair<Point, Point>> edges;  // the edges it leaves out (rarely asked: not pooled,
+                                                 // as one per vertex would drain the pool)
   };
   struct CachedClearance {
-    double cap = -1, value = 0;           // clearanceBelow(cap) from S and C's edges
-    std::vector<std::uint32_t> through;  // those through the vertex or counted so
+    double cap = -1, value = 0;                     // clearanceBelow(cap) from S and C's edges
+    std::size_t throughFirst = 0, throughLast = 0;  // throughs_[first, last): those through the
+                                                    // vertex or counted so
     NearOperands wider;
   };
 
@@ -1384,6 +1387,7 @@ class Sampler {
   PooledVector<std::pair<Point, std::uint8_t>> uniform_;
   PointTable<Known> known_;
   std::vector<CachedClearance> operandClearance_;  // per vertex of S, then of C
+  PooledVector<std::uint32_t> throughs_;           // their edges through the vertex, a run each
   PooledVector<std::uint32_t> atQ_;                 // scratch: the answer's edges at a vertex
   PooledVector<std::pair<Point, Point>> nearest_;   // scratch: the edges near a vertex (S, C, answer)
   SegmentGrid::Nearest nearScratch_;               // scratch
