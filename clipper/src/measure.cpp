@@ -7,6 +7,7 @@
 #include "ghclip/errors.h"
 #include "predicates/even_odd_ray.h"
 #include "predicates/segment_meeting.h"
+#include "recycled.h"
 
 namespace gh {
 namespace {
@@ -154,6 +155,10 @@ double evenOddArea(const Region& region) {
     }
     for (Active& s : active) s.y0 = s.y1;
   }
+  // A huge region's scratch is not kept for good (recycled.h's limit, as for the clip's spares).
+  const std::size_t bytes = segs.capacity() * sizeof(Segment) + xs.capacity() * sizeof(double) +
+                            active.capacity() * sizeof(Active) + spanning.capacity() * sizeof(spanning[0]);
+  if (bytes > detail::kKeepBytes) scratch = Scratch();
   return area;
 }
 

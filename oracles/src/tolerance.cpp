@@ -41,6 +41,8 @@ double roundingAllowance(const Region& subject, const Region& clip, const Region
       allowance += displacement * (std::hypot(v.x - a.x, v.y - a.y) + std::hypot(b.x - v.x, b.y - v.y)) / 2;
     }
   }
+  // A huge problem's vertices are not kept for good.
+  if (inputVertices.capacity() > (std::size_t{64} << 20) / sizeof(Point)) std::vector<Point>().swap(inputVertices);
   return allowance;
 }
 
