@@ -27,11 +27,16 @@ Operand::Operand(const Region& region) {
   ringStart.push_back(static_cast<std::uint32_t>(vertices.size()));
 }
 
-Operand::Operand(const std::vector<Point>& points, const std::vector<std::uint32_t>& ringStarts)
-    : vertices(points), next(points.size()), ringStart(ringStarts) {
+void Operand::linkRings() {
+  next.resize(vertices.size());
   for (std::size_t k = 0; k + 1 < ringStart.size(); ++k) {
     for (std::uint32_t v = ringStart[k]; v < ringStart[k + 1]; ++v) next[v] = v + 1 < ringStart[k + 1] ? v + 1 : ringStart[k];
   }
+}
+
+Operand::Operand(const std::vector<Point>& points, const std::vector<std::uint32_t>& ringStarts)
+    : vertices(points), ringStart(ringStarts) {
+  linkRings();
 }
 
 Operand::Operand(const Region& region, bool dropBadRings) {
@@ -58,10 +63,7 @@ Operand::Operand(const Region& region, bool dropBadRings) {
     ringStart.push_back(static_cast<std::uint32_t>(first));
   }
   ringStart.push_back(static_cast<std::uint32_t>(vertices.size()));
-  next.resize(vertices.size());
-  for (std::size_t k = 0; k + 1 < ringStart.size(); ++k) {
-    for (std::uint32_t v = ringStart[k]; v < ringStart[k + 1]; ++v) next[v] = v + 1 < ringStart[k + 1] ? v + 1 : ringStart[k];
-  }
+  linkRings();
 }
 
 }  // namespace gh::detail

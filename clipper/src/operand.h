@@ -27,6 +27,9 @@ struct Operand {
   std::size_t size() const { return vertices.size(); }
   Point from(std::uint32_t edge) const { return vertices[edge]; }
   Point to(std::uint32_t edge) const { return vertices[next[edge]]; }
+
+ private:
+  void linkRings();  // next[] from ringStart: each ring's last vertex links back to its first
 };
 
 }  // namespace gh::detail

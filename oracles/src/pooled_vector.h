@@ -2,8 +2,9 @@
 // its element type. The sampling judge is built afresh for every fuzz execution, and its grids,
 // bands and scratch lists came to ~350 blocks and ~550 KB an execution: under ASan every fresh
 // block goes through the sanitizer's allocator (its poisoning, and a quarantine that hands out
-// memory not touched since), which made the judge, compiled without the sanitizers, cost 1.6
-// times what it costs in a normal build. Pooled, the storage of the last execution is reused.
+// memory not touched since), even for the judge, compiled without the sanitizers (which cost 1.6
+// times in the fuzz build what it costs in a normal build, not all of it there). Pooled, the
+// storage of the last execution is reused.
 //
 // It is a std::vector in every other way (contents, growth, copies); only where its storage
 // comes from and goes differs. A pool keeps at most kMostPooled vectors per element type, each

@@ -507,7 +507,7 @@ class SegmentGrid {
   static constexpr std::size_t kNearest = 4;
   struct Nearest {
     PooledVector<std::uint32_t> segments;  // each once
-    double beyond = 0;                    // no other segment comes nearer q (0: cannot tell)
+    double beyond = 0;                     // no other segment comes nearer q (0: cannot tell)
   };
 
   // The least of: the distance from q to every segment that does not pass through q, and the
@@ -1388,12 +1388,12 @@ class Sampler {
   PointTable<Known> known_;
   std::vector<CachedClearance> operandClearance_;  // per vertex of S, then of C
   PooledVector<std::uint32_t> throughs_;           // their edges through the vertex, a run each
-  PooledVector<std::uint32_t> atQ_;                 // scratch: the answer's edges at a vertex
-  PooledVector<std::pair<Point, Point>> nearest_;   // scratch: the edges near a vertex (S, C, answer)
+  PooledVector<std::uint32_t> atQ_;                // scratch: the answer's edges at a vertex
+  PooledVector<std::pair<Point, Point>> nearest_;  // scratch: the edges near a vertex (S, C, answer)
   SegmentGrid::Nearest nearScratch_;               // scratch
   NearOperands operandScratch_;                    // scratch: an answer vertex's wider clearance from S and C
   std::vector<RaysFrom> rays_;                     // each answer's edges near the vertex sampled
-  PooledVector<double> strictByAnswer_;             // scratch: each answer's clearance from the vertex
+  PooledVector<double> strictByAnswer_;            // scratch: each answer's clearance from the vertex
   struct VertexAt {
     Point q;
     std::int64_t operand;  // its place in operandClearance_ (an S or C vertex's), or -1
@@ -1402,11 +1402,11 @@ class Sampler {
     std::uint32_t vertex;  // its place in vertices_
     Point prev, next;      // its neighbours on its ring
   };
-  PooledVector<VertexAt> vertices_;                       // scratch: the vertices of S, C and the answers
-  PointTable<std::uint32_t> vertexIndex_;                // scratch: their places in vertices_
-  PooledVector<Corner> cornersAt_;                        // scratch: every corner of every ring
-  PooledVector<std::pair<Point, Point>> corners_;         // scratch: one vertex's distinct corners
-  PooledVector<Point> fan_;                         // scratch: the far ends of the edges through a vertex
+  PooledVector<VertexAt> vertices_;                // scratch: the vertices of S, C and the answers
+  PointTable<std::uint32_t> vertexIndex_;          // scratch: their places in vertices_
+  PooledVector<Corner> cornersAt_;                 // scratch: every corner of every ring
+  PooledVector<std::pair<Point, Point>> corners_;  // scratch: one vertex's distinct corners
+  PooledVector<Point> fan_;                        // scratch: the far ends of the edges through a vertex
 };
 
 Box boxOf(std::initializer_list<const Region*> regions) {
