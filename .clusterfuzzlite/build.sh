@@ -17,7 +17,8 @@ for t in "${TARGETS[@]}"; do
   cp "$BUILD/bin/$t" "$OUT/"
   cp "$SOURCE/fuzz/$t.dict" "$OUT/$t.dict"
   # libFuzzer turns its input-length control off for a target with a custom mutator
-  # (fuzz/new_problem_mutator.h); its default back on, as ./harness fuzz runs them.
-  printf '[libfuzzer]\nlen_control = 100\n' >"$OUT/$t.options"
+  # (fuzz/new_problem_mutator.h); its default back on, as ./harness fuzz runs them. The entropic
+  # schedule's rare features are its 100 rarest only (the harness's fuzz command says why).
+  printf '[libfuzzer]\nlen_control = 100\nentropic_feature_frequency_threshold = 0\n' >"$OUT/$t.options"
   (cd "$SOURCE/fuzz/${t}_seed_corpus" && zip -q -r "$OUT/${t}_seed_corpus.zip" .)
 done
