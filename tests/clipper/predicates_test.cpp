@@ -6,6 +6,7 @@
 #include <gmpxx.h>
 #include <rapidcheck/gtest.h>
 
+#include <limits>
 #include <optional>
 #include <random>
 #include <vector>
@@ -292,6 +293,25 @@ TEST(CrossSign, DecidesRandomTurnsAtSmallScalesInStageA) {
     }
     EXPECT_LT(counters.expansionDecisions + counters.filterFailures, n / 100u) << "2^" << e;
   }
+}
+
+// Axis-parallel directions are decided inline: each product has a factor that is exactly 0 (two
+// vertical directions, a vertical and a horizontal one...), so the sign is zero with no stage
+// run. A factor of 0 in only one product decides nothing: the other product may be all there is,
+// even a subnormal one.
+TEST(CrossSign, ZeroFactorInEachProductIsAnExactZero) {
+  ExactCounters counters;
+  const double sub = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(crossSign({1, 2}, {1, 5}, {3, 4}, {3, -7}, counters), Sign::Zero);          // both vertical
+  EXPECT_EQ(crossSign({1, 2}, {6, 2}, {-3, sub}, {9, sub}, counters), Sign::Zero);      // both horizontal
+  EXPECT_EQ(crossSign({0, 0}, {0, 0}, {sub, 1e300}, {-1e300, sub}, counters), Sign::Zero);  // a zero direction
+  EXPECT_EQ(counters.expansionDecisions + counters.filterFailures, 0u);
+  const Point a{0, 0}, b{0, 1}, c{0, 0}, d{sub, 0};  // vertical against horizontal, d a subnormal away
+  EXPECT_EQ(static_cast<int>(crossSign(a, b, c, d, counters)), rationalCross(a, b, c, d));
+  EXPECT_EQ(crossSign(a, b, c, d, counters), Sign::Negative);
+  const Point e{sub, 3}, f{sub, -2}, g{0, 0}, h{2 * sub, sub};  // ux = 0 only: (b - a) x (d - c) = 5 * 2 sub
+  EXPECT_EQ(static_cast<int>(crossSign(e, f, g, h, counters)), rationalCross(e, f, g, h));
+  EXPECT_EQ(crossSign(e, f, g, h, counters), Sign::Positive);
 }
 
 // A difference that spans 1000 binades (2^500 minus a subnormal) has a rounding error so small

@@ -38,7 +38,7 @@ double certifiedRatio(FilteredDeterminant w1, FilteredDeterminant w2, double& er
 // still falls back on the original points. Out of line: the usual path stays as it was.
 [[gnu::noinline]] void determinantsTowardsUnit(Point a, Point b, Point c, Point d, FilteredDeterminant& dc,
                                                FilteredDeterminant& dd) {
-  scaleTowardsUnit({&a, &b, &c, &d});
+  scaleTowardsUnit(&a, &b, &c, &d);
   dc = orientationDeterminant(a, b, c), dd = orientationDeterminant(a, b, d);
 }
 

@@ -87,23 +87,29 @@ inline void scaleTowardsUnit(double& x, double& y) {
 // beyond it, and every predicate would go on to the slower exact stages.
 inline constexpr double kFarBelow = 0x1p-200, kFarAbove = 0x1p200;
 
+// The larger of m and the magnitudes of p's coordinates.
+inline double largerMagnitude(double m, const Point& p) { return std::max(m, std::max(std::abs(p.x), std::abs(p.y))); }
+
 // Scales the points together by one power of two, exactly, so that their largest coordinate is
 // in [1, 2), when it is below 2^-200 or beyond 2^200 (and, scaling down, no nonzero coordinate
 // would leave the normal range). The sign of a polynomial homogeneous in differences of the
 // coordinates stands, and so does the ratio of two of the same degree (a crossing's position
-// along an edge) and the order of two coordinates.
-inline void scaleTowardsUnit(std::initializer_list<Point*> points) {
-  double largest = 0, smallest = std::numeric_limits<double>::infinity();
-  for (const Point* p : points) {
+// along an edge) and the order of two coordinates. A parameter pack, not a list: the test runs
+// before every exact predicate, and a list's array on the stack cost a poisoned frame under ASan.
+template <class... Points>
+inline void scaleTowardsUnit(Points*... points) {
+  double largest = 0;
+  ((largest = largerMagnitude(largest, *points)), ...);
+  if (!(largest < kFarBelow || largest > kFarAbove)) return;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const Point* p : {static_cast<const Point*>(points)...}) {
     for (const double c : {std::abs(p->x), std::abs(p->y)}) {
-      largest = std::max(largest, c);
       if (c != 0) smallest = std::min(smallest, c);
     }
   }
-  if (!(largest < kFarBelow || largest > kFarAbove)) return;
   const int k = towardsUnitExponent(largest, smallest);
   if (k == 0) return;
-  for (Point* p : points) *p = {timesPowerOfTwo(p->x, k), timesPowerOfTwo(p->y, k)};
+  ((*points = {timesPowerOfTwo(points->x, k), timesPowerOfTwo(points->y, k)}), ...);
 }
 
 // Appends sign * x * y to terms as two terms, exactly; false, appending nothing, when the product

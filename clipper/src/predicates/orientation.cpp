@@ -41,10 +41,10 @@ std::optional<Sign> crossSignInDoubles(Point a, Point b, Point c, Point d) {
 
 }  // namespace
 
-Sign crossSign(Point a, Point b, Point c, Point d, ExactCounters& counters) {
+Sign crossSignBeyondStageA(Point a, Point b, Point c, Point d, ExactCounters& counters) {
   // Points near 1e-300 or 1e150 are scaled towards 1 first (difference_products.h: the sign
   // stands), so that every stage below works there as at 1.
-  scaleTowardsUnit({&a, &b, &c, &d});
+  scaleTowardsUnit(&a, &b, &c, &d);
   // Shewchuk's stage-A bound (each factor is one rounded difference, as in orientation()), then
   // the floating-point filter with a running error bound, then the exact sum in doubles, then GMP.
   // Stage A needs products in the normal range: when they are not, each pair of rounded

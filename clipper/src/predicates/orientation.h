@@ -41,8 +41,24 @@ inline Sign orientation(Point a, Point b, Point c, ExactCounters& counters) {
   return orientation(orientationDeterminant(a, b, c), a, b, c, counters);
 }
 
+// The sign of (b - a) x (d - c) when crossSign's inline stages cannot decide: points scaled
+// towards 1, stage A again, the filtered predicate, the exact sum in doubles, GMP.
+Sign crossSignBeyondStageA(Point a, Point b, Point c, Point d, ExactCounters& counters);
+
 // Sign of (b - a) x (d - c), the cross product of two edge directions (the turn from one
-// direction to the other).
-Sign crossSign(Point a, Point b, Point c, Point d, ExactCounters& counters);
+// direction to the other). Inline: an exact zero when each product has a factor that is exactly
+// zero (a difference of doubles is 0 only when they are equal: axis-parallel directions, the
+// collinear points of the clean-up, need no rounding analysis), then stage A, which decides
+// almost every other call.
+inline Sign crossSign(Point a, Point b, Point c, Point d, ExactCounters& counters) {
+  constexpr double kBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+  const double ux = b.x - a.x, uy = b.y - a.y, vx = d.x - c.x, vy = d.y - c.y;
+  if ((ux == 0 || vy == 0) && (uy == 0 || vx == 0)) return Sign::Zero;
+  const double left = ux * vy, right = uy * vx, sum = std::abs(left) + std::abs(right);
+  if (sum > 0x1p-900 && sum < 0x1p900) {
+    if (const auto s = certainSign(left - right, kBound * sum)) return *s;
+  }
+  return crossSignBeyondStageA(a, b, c, d, counters);
+}
 
 }  // namespace gh::detail

@@ -62,7 +62,7 @@ int compare(Point a1, Point a2, Point m1, Point m2, Point n1, Point n2, int bSig
             ExactCounters& counters, bool sameLimit) {
   // Every sign below is of a polynomial homogeneous in differences of the coordinates, or compares
   // two coordinates: points near 1e-300 or 1e150 are scaled first (difference_products.h).
-  scaleTowardsUnit({&a1, &a2, &m1, &m2, &n1, &n2});
+  scaleTowardsUnit(&a1, &a2, &m1, &m2, &n1, &n2);
   // D_M = cross(m2 - m1, a1 - a2), D_N likewise.
   const int denominator =
       static_cast<int>(crossSign(m1, m2, a2, a1, counters)) * static_cast<int>(crossSign(n1, n2, a2, a1, counters));
