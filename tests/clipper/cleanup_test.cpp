@@ -89,6 +89,22 @@ TEST(CleanUp, DissolvesPartialOverlapsSplitAtEachOthersEndpoints) {
   EXPECT_TRUE(sameInterior(touching, r));
 }
 
+// The seam lies along part of a long sloped edge, which is cut where the other ring's edge
+// starts, far from its own ends: the edge index must list the edge in the cell of every point on
+// it (an index listing each edge only in the cells its line passes through, with the line's
+// slope inverted, fails here). Small squares apart make the grid finer.
+TEST(CleanUp, DissolvesASeamAlongALongSlopedEdge) {
+  // A triangle whose long side runs (128, 32) -> (0, 0); another whose side runs (32, 8) ->
+  // (160, 40), back along the first from (32, 8) to (128, 32); a square shares the corner (128, 0)
+  // (seams are looked for where a vertex repeats).
+  Region touching{{{0, 0}, {128, 0}, {128, 32}}, {{32, 8}, {160, 40}, {32, 40}}, rect(128, -1, 129, 0)};
+  for (int i = 0; i < 30; ++i) touching.push_back(rect(3 * i, 100, 3 * i + 1, 101));
+  const Region r = clean(touching, true);
+  ASSERT_EQ(r.size(), 31u);  // one ring, and the squares
+  EXPECT_EQ(r[0], (Ring{{0, 0}, {128, 0}, {128, -1}, {129, -1}, {129, 0}, {128, 0}, {128, 32}, {160, 40}, {32, 40}, {32, 8}}));
+  EXPECT_TRUE(sameInterior(touching, r));
+}
+
 // Seams are looked for only where the rings share a vertex (the cheap trigger): rings that touch
 // along a T-junction alone keep their seam. Their even-odd interior is right either way.
 TEST(CleanUp, LeavesSeamsWithoutASharedVertex) {
