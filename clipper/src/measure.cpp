@@ -108,6 +108,8 @@ double evenOddArea(const Region& region) {
     }
   }
   std::sort(segs.begin(), segs.end(), [](const Segment& s, const Segment& t) { return s.a.x < t.a.x; });
+  bool huge = false;  // a height whose double would overflow in a sum of two
+  for (const Segment& s : segs) huge = huge || std::max(std::abs(s.a.y), std::abs(s.b.y)) >= 0x1p1022;
   // A proper crossing lies strictly inside both segments' x- and y-ranges (neither is vertical):
   // pairs whose ranges only touch or miss are passed over before the four orientations.
   for (std::size_t i = 0; i < segs.size(); ++i) {
@@ -123,7 +125,12 @@ double evenOddArea(const Region& region) {
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
 
-  // Slab by slab, the segments spanning it ordered by their height at its middle and paired off.
+  // Slab by slab, the segments spanning it ordered by the sum of their heights at its two
+  // boundaries and paired off. No two of them cross inside the slab (their crossings bound
+  // slabs), so one lying below another is lower at both boundaries, and its rounded sum is never
+  // the larger. (Their height at the slab's middle was the key before, but between two adjacent
+  // doubles the middle rounds to one of them, where segments meeting there tie: a triangle one ulp
+  // wide was measured as 0.) Halves are summed where a height is near the top of the range.
   // A segment's height at a boundary is computed once, at the slab it closes, and reused as the
   // next slab's left one (the same division: the same bits).
   double area = 0;
@@ -132,7 +139,7 @@ double evenOddArea(const Region& region) {
   active.clear();
   std::size_t nextSeg = 0;
   for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
-    const double x0 = xs[k], x1 = xs[k + 1], xm = (x0 + x1) / 2;
+    const double x0 = xs[k], x1 = xs[k + 1];
     active.erase(std::remove_if(active.begin(), active.end(), [x0](const Active& s) { return s.segment->b.x <= x0; }),
                  active.end());
     // Entering segments go after the ones still active, in the order they were sorted in: the
@@ -144,7 +151,8 @@ double evenOddArea(const Region& region) {
     spanning.clear();
     for (std::size_t i = 0; i < active.size(); ++i) {
       active[i].y1 = active[i].segment->yAt(x1);
-      spanning.emplace_back(active[i].segment->yAt(xm), i);
+      const double y0 = active[i].y0, y1 = active[i].y1;
+      spanning.emplace_back(huge ? y0 / 2 + y1 / 2 : y0 + y1, i);
     }
     std::sort(spanning.begin(), spanning.end(), [](const auto& u, const auto& v) { return u.first < v.first; });
     for (std::size_t i = 0; i + 1 < spanning.size(); i += 2) {

@@ -71,6 +71,26 @@ TEST(Measure, EvenOddAreaStaysFiniteWhereDeterminantsCancel) {
   EXPECT_NEAR(area, v.expectedArea, 1e-9 * v.expectedArea);
 }
 
+// Regression (fuzz_clip_exact, tests/regressions/fuzz/fuzz_clip_exact/evenodd-area-one-ulp-slab):
+// the exact arithmetic's union of an empty subject with a clip ring folded near (1, 1) is this
+// triangle, one ulp of 1 wide and 1 high (the exact oracle passes it), but evenOddArea measured
+// it and the clip as 0, and the union invariant trapped. Its slabs are one ulp wide, their
+// middle rounded to a boundary, where the segments meeting there tie: the pairs were ordered by
+// their heights there, half of them upside down.
+TEST(Measure, EvenOddAreaOfSlabsOneUlpWide) {
+  const double below = std::nextafter(1.0, 0.0), twoBelow = std::nextafter(below, 0.0);
+  const Region triangle{{{below, below}, {twoBelow, below}, {1, 3.637978807091713e-12}}};
+  // Exactly: ((below - twoBelow) * (below - 3.6e-12)) / 2, within an ulp.
+  const double exact = (below - twoBelow) * (below - 3.637978807091713e-12) / 2;
+  EXPECT_NEAR(evenOddArea(triangle), exact, 1e-15 * exact);
+  const Region folded{{{1, 3.637978807091713e-12}, {twoBelow, below}, {std::nextafter(twoBelow, 0.0), below}, {below, below},
+                       {below, twoBelow}, {below, below}, {below, below}, {below, below}}};
+  const auto v = oracle::exactCheck({}, folded, Op::Union, triangle);
+  EXPECT_TRUE(v.pass);
+  EXPECT_NEAR(evenOddArea(folded), v.expectedArea, 1e-15 * v.expectedArea);
+  EXPECT_GT(v.expectedArea, 0);
+}
+
 // GMP, behind the exact predicates, raises SIGFPE on NaN and infinity: refused with a message.
 TEST(Measure, NonFiniteCoordinatesAreRefused) {
   const Region square{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
