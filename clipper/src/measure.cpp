@@ -142,8 +142,9 @@ double evenOddArea(const Region& region) {
     const double x0 = xs[k], x1 = xs[k + 1];
     active.erase(std::remove_if(active.begin(), active.end(), [x0](const Active& s) { return s.segment->b.x <= x0; }),
                  active.end());
-    // Entering segments go after the ones still active, in the order they were sorted in: the
-    // order of equal heights below follows this order.
+    // Entering segments go after the ones still active, in the order they were sorted in. (The
+    // sort below is not stable: segments with equal keys coincide across the slab, or nearly,
+    // their sums rounding alike, and pairing them either way differs by that rounding at most.)
     while (nextSeg < segs.size() && segs[nextSeg].a.x <= x0) {
       const Segment& s = segs[nextSeg++];
       if (s.b.x > x0) active.push_back({&s, s.yAt(x0), 0});
