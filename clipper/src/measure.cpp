@@ -92,7 +92,7 @@ double evenOddArea(const Region& region) {
     std::vector<Segment> segs;
     std::vector<double> xs;
     std::vector<Active> active;
-    std::vector<std::pair<double, std::size_t>> spanning;  // (height at the middle, place in active)
+    std::vector<std::pair<double, std::size_t>> spanning;  // (its boundary heights summed, place in active)
   };
   thread_local Scratch scratch;
   std::vector<Segment>& segs = scratch.segs;

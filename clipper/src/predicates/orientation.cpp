@@ -1,6 +1,7 @@
 #include "predicates/orientation.h"
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <tuple>
 
@@ -52,15 +53,12 @@ Sign crossSignBeyondStageA(Point a, Point b, Point c, Point d, ExactCounters& co
   // error, and the sign stands), so that coordinates near 1e-300 or 1e150 are decided here as at 1.
   {
     double ux = b.x - a.x, uy = b.y - a.y, vx = d.x - c.x, vy = d.y - c.y;
-    double left = ux * vy, right = uy * vx;
-    double sum = std::abs(left) + std::abs(right);
-    if (!(sum > 0x1p-900 && sum < 0x1p900)) {
+    FilteredDeterminant det = stageADeterminant(ux, uy, vx, vy);
+    if (!(det.bound < std::numeric_limits<double>::infinity())) {  // products out of range
       scaleTowardsUnit(ux, uy), scaleTowardsUnit(vx, vy);
-      left = ux * vy, right = uy * vx, sum = std::abs(left) + std::abs(right);
+      det = stageADeterminant(ux, uy, vx, vy);
     }
-    if (sum > 0x1p-900 && sum < 0x1p900) {
-      if (const auto s = certainSign(left - right, (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * sum)) return *s;
-    }
+    if (const auto s = certainSign(det.value, det.bound)) return *s;
   }
   const auto approximate = [&](auto numbers) {
     using N = typename decltype(numbers)::Number;

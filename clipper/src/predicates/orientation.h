@@ -11,21 +11,27 @@
 
 namespace gh::detail {
 
-// (b - a) x (c - a) evaluated in doubles, with Shewchuk's stage-A bound on its error:
-// |exact - value| <= bound, where bound = (3 + 16u) u (|left| + |right|) while nothing under- or
-// overflows, and infinity otherwise. Callers that need the determinant itself as well as its
-// sign (the exact policy's crossing parameters) evaluate it once.
+// u x v = ux vy - uy vx evaluated in doubles, each factor one rounded difference, with
+// Shewchuk's stage-A bound on its error: |exact - value| <= bound, where bound = (3 + 16u) u
+// (|left| + |right|) while nothing under- or overflows, and infinity otherwise. Callers that need
+// the determinant itself as well as its sign (the exact policy's crossing parameters) evaluate
+// it once.
 struct FilteredDeterminant {
   double value;
   double bound;
 };
 
-inline FilteredDeterminant orientationDeterminant(Point a, Point b, Point c) {
+inline FilteredDeterminant stageADeterminant(double ux, double uy, double vx, double vy) {
   constexpr double kBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
-  const double left = (b.x - a.x) * (c.y - a.y), right = (b.y - a.y) * (c.x - a.x);
+  const double left = ux * vy, right = uy * vx;
   const double sum = std::abs(left) + std::abs(right);
   const bool safe = sum > 0x1p-900 && sum < 0x1p900;
   return {left - right, safe ? kBound * sum : std::numeric_limits<double>::infinity()};
+}
+
+// (b - a) x (c - a), with its stage-A bound.
+inline FilteredDeterminant orientationDeterminant(Point a, Point b, Point c) {
+  return stageADeterminant(b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
 }
 
 // The sign when stage A cannot decide: the filtered predicate, GMP if it must.
@@ -51,13 +57,10 @@ Sign crossSignBeyondStageA(Point a, Point b, Point c, Point d, ExactCounters& co
 // collinear points of the clean-up, need no rounding analysis), then stage A, which decides
 // almost every other call.
 inline Sign crossSign(Point a, Point b, Point c, Point d, ExactCounters& counters) {
-  constexpr double kBound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
   const double ux = b.x - a.x, uy = b.y - a.y, vx = d.x - c.x, vy = d.y - c.y;
   if ((ux == 0 || vy == 0) && (uy == 0 || vx == 0)) return Sign::Zero;
-  const double left = ux * vy, right = uy * vx, sum = std::abs(left) + std::abs(right);
-  if (sum > 0x1p-900 && sum < 0x1p900) {
-    if (const auto s = certainSign(left - right, kBound * sum)) return *s;
-  }
+  const FilteredDeterminant det = stageADeterminant(ux, uy, vx, vy);
+  if (const auto s = certainSign(det.value, det.bound)) return *s;
   return crossSignBeyondStageA(a, b, c, d, counters);
 }
 
