@@ -24,6 +24,7 @@
 
 #include "ghclip/errors.h"
 #include "ghclip/validate.h"
+#include "difference_bound.h"
 #include "judging_scale.h"
 #include "point_hash.h"
 #include "robust_segment_traits.h"
@@ -58,7 +59,9 @@ struct AddCounts {
 
 using Traits = CGAL::Arr_curve_data_traits_2<SegmentTraits, Counts, AddCounts>;
 constexpr unsigned kS = 1, kC = 2;
-constexpr std::size_t kMostAnswers = 30;  // parity bits of S, C and the answers in one unsigned
+constexpr std::size_t kMostAnswers = 30;
+// symmetricDifferenceAreas' relative accuracy (exact_oracle.h).
+constexpr double kSymmetricDifferenceTightness = 1e-9;  // parity bits of S, C and the answers in one unsigned
 // Parity bits of S (kS), C (kC) and answer j (answerBit(j)), and how many rounding zones hold
 // the face.
 constexpr unsigned answerBit(std::size_t j) { return 4u << j; }
@@ -769,35 +772,124 @@ ExactVerdict exactCheck(const Region& subject, const Region& clip, Op op, const 
   return exactCheckAll(subject, clip, {{op, result}}, options).front();
 }
 
-std::vector<double> symmetricDifferenceAreas(const std::vector<std::pair<Region, Region>>& pairs) {
-  if (2 * pairs.size() > kMostAnswers) {
-    throw std::invalid_argument("symmetricDifferenceAreas compares at most " + std::to_string(kMostAnswers / 2) + " pairs at once");
+namespace {
+
+// The symmetric differences of several pairs of regions in one arrangement, at the judging scale
+// 2^k: a face's bit i is its parity in pair i's symmetric difference. Both regions of pair i
+// carry parity bit i, so a segment that a and b (or one of them twice) share cancels its own bit,
+// and a curve left with no bit separates no faces: it is dropped before the sweep. Two answers
+// that differ only near a few vertices leave only the slivers there to arrange, and two that
+// share every segment none at all.
+class SymmetricDifferences {
+ public:
+  // Asked before the arrangement is tried (judging() turns what it throws into CannotJudge).
+  static void requireFewPairs(std::size_t pairs, const char* caller) {
+    if (2 * pairs > kMostAnswers) {
+      throw std::invalid_argument(std::string(caller) + " compares at most " + std::to_string(kMostAnswers / 2) + " pairs at once");
+    }
   }
-  return judging([&] {
+
+  explicit SymmetricDifferences(const std::vector<std::pair<Region, Region>>& pairs) : areas_(pairs.size(), Interval(0)) {
     std::vector<const Region*> all;
     for (const auto& [a, b] : pairs) all.push_back(&a), all.push_back(&b);
-    const int k = judgingExponent(all);
-    std::vector<Region> scaled;
-    if (k != 0) {
-      for (const Region* r : all) scaled.push_back(scaledBy(*r, k));
-      for (std::size_t i = 0; i < all.size(); ++i) all[i] = &scaled[i];
+    k_ = judgingExponent(all);
+    std::vector<CountedSegment> segments;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      const Region r = normalized(k_ == 0 ? *all[i] : scaledBy(*all[i], k_), OnBadRing::Drop);
+      addSegments(r, {0, 0, 1u << (i / 2), 0}, segments);
     }
-    Arrangement arr;
-    build(operandCurves({}, {}, all), arr);
-    std::vector<Interval> areas(pairs.size(), Interval(0));
-    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    std::vector<Traits::Curve_2> curves = mergedCurves(std::move(segments));
+    curves.erase(std::remove_if(curves.begin(), curves.end(), [](const Traits::Curve_2& g) { return g.data().r == 0; }),
+                 curves.end());
+    if (curves.empty()) return;
+    build(curves, arr_);
+    for (auto f = arr_.faces_begin(); f != arr_.faces_end(); ++f) {
       if (f->is_unbounded()) continue;
-      const unsigned bits = f->data().bits;
       std::optional<Interval> area;
-      for (std::size_t i = 0; i < pairs.size(); ++i) {
-        if (resultInside(bits, 2 * i) == resultInside(bits, 2 * i + 1)) continue;
+      for (std::size_t i = 0; i < areas_.size(); ++i) {
+        if (!resultInside(f->data().bits, i)) continue;
         if (!area) area = faceAreaInterval(f);
-        areas[i] += *area;
+        areas_[i] += *area;
       }
     }
+  }
+
+  // Pair i's area at the judging scale: certified, and exact.
+  const Interval& interval(std::size_t i) const { return areas_[i]; }
+  EFT exact(std::size_t i) const {
+    EFT sum = 0;
+    for (auto f = arr_.faces_begin(); f != arr_.faces_end(); ++f) {
+      if (!f->is_unbounded() && resultInside(f->data().bits, i)) sum += faceArea(f);
+    }
+    return sum;
+  }
+  int exponent() const { return k_; }
+
+ private:
+  int k_ = 0;
+  Arrangement arr_;
+  std::vector<Interval> areas_;
+};
+
+}  // namespace
+
+std::vector<double> symmetricDifferenceAreas(const std::vector<std::pair<Region, Region>>& pairs) {
+  SymmetricDifferences::requireFewPairs(pairs.size(), "symmetricDifferenceAreas");
+  return judging([&] {
+    const SymmetricDifferences d(pairs);
     std::vector<double> out;
-    for (const Interval& a : areas) out.push_back(std::ldexp(CGAL::to_double(a), -2 * k));
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      // A sliver's certified interval can be wider than the sliver (its vertices' products round
+      // at the scale of the coordinates): such a pair's area is summed exactly instead.
+      const Interval& a = d.interval(i);
+      const double area = a.sup() - a.inf() <= kSymmetricDifferenceTightness * a.inf() ? CGAL::to_double(a)
+                                                                                        : CGAL::to_double(d.exact(i));
+      out.push_back(std::ldexp(area, -2 * d.exponent()));
+    }
     return out;
+  });
+}
+
+std::vector<bool> symmetricDifferencesWithin(const std::vector<std::pair<Region, Region>>& pairs,
+                                             const std::vector<double>& limits) {
+  if (limits.size() != pairs.size()) throw std::invalid_argument("symmetricDifferencesWithin: one limit per pair");
+  for (double limit : limits) {
+    if (std::isnan(limit)) throw std::invalid_argument("symmetricDifferencesWithin: a limit is NaN");
+  }
+  SymmetricDifferences::requireFewPairs(pairs.size(), "symmetricDifferencesWithin");
+  // Pairs that differ by slivers within their limits are decided in doubles
+  // (difference_bound.h); the arrangement is built for the others only.
+  std::vector<bool> within(pairs.size(), true);
+  std::vector<std::pair<Region, Region>> undecided;
+  std::vector<std::size_t> at;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const std::optional<double> bound = symmetricDifferenceBound(pairs[i].first, pairs[i].second);
+    if (bound && *bound <= limits[i]) continue;
+    undecided.push_back(pairs[i]);
+    at.push_back(i);
+  }
+  if (undecided.empty()) return within;
+  return judging([&] {
+    const SymmetricDifferences d(undecided);
+    const int k = d.exponent();
+    for (std::size_t u = 0; u < undecided.size(); ++u) {
+      const std::size_t i = at[u];
+      // The interval's ends back at the original scale, when that loses nothing: most pairs are
+      // decided there; one whose interval holds the limit is decided in exact arithmetic.
+      const Interval& a = d.interval(u);
+      const double lo = std::ldexp(a.inf(), -2 * k), hi = std::ldexp(a.sup(), -2 * k);
+      const bool exactEnds = std::ldexp(lo, 2 * k) == a.inf() && std::ldexp(hi, 2 * k) == a.sup();
+      if (exactEnds && hi <= limits[i]) {
+        within[i] = true;
+      } else if (exactEnds && lo > limits[i]) {
+        within[i] = false;
+      } else if (std::isinf(limits[i])) {
+        within[i] = limits[i] > 0;
+      } else {
+        within[i] = d.exact(u) <= EFT(limits[i]) * powerOfTwo(2 * k);
+      }
+    }
+    return within;
   });
 }
 

@@ -102,10 +102,18 @@ struct Answer {
 std::vector<ExactVerdict> exactCheckAll(const Region& subject, const Region& clip, const std::vector<Answer>& answers,
                                         const ExactOptions& options = {});
 
-// For each pair (a, b), the even-odd area of their symmetric difference (the midpoint of a
-// certified interval), all pairs in one arrangement: what exactCheck(a, {}, Op::Union, b) calls
-// errorArea. At most 15 pairs.
+// For each pair (a, b), the even-odd area of their symmetric difference, all pairs in one
+// arrangement of the segments that a and b do not share: what exactCheck(a, {}, Op::Union, b)
+// calls errorArea. Within 1e-9 of it, relatively: the midpoint of a certified interval where
+// that is so tight, else the exact area rounded (a sliver's interval can be wider than itself).
+// At most 15 pairs.
 std::vector<double> symmetricDifferenceAreas(const std::vector<std::pair<Region, Region>>& pairs);
+
+// For each pair (a, b), whether the area of their symmetric difference is at most limits[i],
+// decided exactly (certified intervals first; exact arithmetic only where an interval holds the
+// limit). At most 15 pairs; a NaN limit is refused (std::invalid_argument).
+std::vector<bool> symmetricDifferencesWithin(const std::vector<std::pair<Region, Region>>& pairs,
+                                             const std::vector<double>& limits);
 
 // The exact answer's boundary rings (points rounded to double: a faithful rounding).
 Region exactAnswer(const Region& subject, const Region& clip, Op op);
