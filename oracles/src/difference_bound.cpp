@@ -111,7 +111,11 @@ std::optional<double> symmetricDifferenceBound(const Region& a, const Region& b)
   for (const Segment& s : odd) {
     const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, length2 = dx * dx + dy * dy;
     on.clear();
-    for (const Point& v : before) {
+    // Only vertices within `near` of the segment's x-range can be near it (s.a.x <= s.b.x).
+    const auto first = std::lower_bound(before.begin(), before.end(), s.a.x - near,
+                                        [](const Point& v, double x) { return v.x < x; });
+    for (auto it = first; it != before.end() && it->x <= s.b.x + near; ++it) {
+      const Point& v = *it;
       if (v == s.a || v == s.b) continue;
       const double t = ((v.x - s.a.x) * dx + (v.y - s.a.y) * dy) / length2;
       const double cross = (v.y - s.a.y) * dx - (v.x - s.a.x) * dy;
