@@ -47,6 +47,15 @@ Region movedConstructed(const Region& r, const Region& s, const Region& c, int u
   return out;
 }
 
+// Every coordinate times 2^e (exact while it stays a normal double).
+Region scaled(const Region& r, int e) {
+  Region out = r;
+  for (Ring& ring : out) {
+    for (Point& p : ring) p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+  }
+  return out;
+}
+
 TEST(DifferenceBound, IdenticalAnswersInAnyRingOrderBoundZero) {
   const Region a{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{1, 1}, {1, 2}, {2, 2}}};
   const Region b{{{1, 2}, {2, 2}, {1, 1}}, {{4, 4}, {4, 0}, {0, 0}, {0, 4}}};
@@ -122,6 +131,12 @@ TEST(DifferenceBound, SliverNarrowerThanItsIntervalIsMeasuredExactly) {
   EXPECT_NEAR(oracle::symmetricDifferenceAreas({{ours, theirs}}).front(), sliver, 1e-9 * sliver);
   EXPECT_EQ(oracle::symmetricDifferencesWithin({{ours, theirs}}, {1.66e-12}), std::vector<bool>{true});
   EXPECT_EQ(oracle::symmetricDifferencesWithin({{ours, theirs}}, {sliver / 2}), std::vector<bool>{false});
+  // Scaled by 2^-400 (judged at another scale, the interval as wide as before): decided in
+  // exact arithmetic on either side of the sliver's area.
+  const Region small = scaled(ours, -400), smallTheirs = scaled(theirs, -400);
+  const double smallSliver = std::ldexp(sliver, -800);
+  EXPECT_EQ(oracle::symmetricDifferencesWithin({{small, smallTheirs}}, {smallSliver * (1 + 1e-6)}), std::vector<bool>{true});
+  EXPECT_EQ(oracle::symmetricDifferencesWithin({{small, smallTheirs}}, {smallSliver * (1 - 1e-6)}), std::vector<bool>{false});
 }
 
 // Limits on either side of the exact area, as close as doubles allow: the decision is exact,
@@ -149,7 +164,42 @@ TEST(DifferenceBound, WithinDecidesAsTheExactArea) {
     }
   }
   EXPECT_THROW(oracle::symmetricDifferencesWithin({{{}, {}}}, {NAN}), std::invalid_argument);
+  EXPECT_EQ(oracle::symmetricDifferencesWithin({{{}, {}}}, {0.0}), std::vector<bool>{true});
   EXPECT_THROW(oracle::symmetricDifferencesWithin({{{}, {}}}, {}), std::invalid_argument);
+}
+
+// The same pairs scaled by 2^-400 and 2^400, beyond the judges' comfortable range (areas by
+// 2^-800 and 2^800: slivers of 1e-16 stay normal doubles, and so do the limits): the bound, the
+// interval at the judging scale and the exact comparison decide as at scale 1.
+TEST(DifferenceBound, WithinDecidesAlikeAtEveryScale) {
+  std::mt19937_64 rng(11);
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const Region s{work::randomRing(8, seed)}, c{work::randomRing(8, seed + 91)};
+    std::vector<std::pair<Region, Region>> pairs;
+    for (Op op : kAllOps) {
+      const Region r = clip(s, c, op);
+      pairs.emplace_back(r, movedConstructed(r, s, c, 3, rng));
+    }
+    const std::vector<double> areas = oracle::symmetricDifferenceAreas(pairs);
+    for (int e : {-400, 400}) {
+      std::vector<std::pair<Region, Region>> big;
+      std::vector<double> above, below;
+      for (std::size_t i = 0; i < pairs.size(); ++i) {
+        big.emplace_back(scaled(pairs[i].first, e), scaled(pairs[i].second, e));
+        above.push_back(std::ldexp(areas[i] * (1 + 1e-8), 2 * e));
+        below.push_back(std::ldexp(areas[i] * (1 - 1e-8), 2 * e));
+        if (const auto bound = oracle::symmetricDifferenceBound(big.back().first, big.back().second)) {
+          EXPECT_GE(*bound, std::ldexp(areas[i], 2 * e) * (1 - 1e-9)) << seed << " " << i << " 2^" << e;
+        }
+      }
+      const std::vector<bool> within = oracle::symmetricDifferencesWithin(big, above);
+      const std::vector<bool> beyond = oracle::symmetricDifferencesWithin(big, below);
+      for (std::size_t i = 0; i < pairs.size(); ++i) {
+        EXPECT_TRUE(within[i]) << seed << " " << i << " 2^" << e;
+        EXPECT_EQ(beyond[i], areas[i] == 0) << seed << " " << i << " 2^" << e;
+      }
+    }
+  }
 }
 
 }  // namespace
