@@ -78,7 +78,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<bool> within;
   try {
     const gh::fuzz::JudgeHeap heap;
-    within = gh::oracle::symmetricDifferencesWithin(answers, allowed);  // all five in one arrangement
+    // Most pairs by a bound in doubles; the others in one arrangement.
+    within = gh::oracle::symmetricDifferencesWithin(answers, allowed);
   } catch (const gh::oracle::CannotJudge& e) {
     gh::fuzz::record("fuzz_diff_vatti", std::string("cannot judge: ") + e.what(), s, c, gh::kAllOps[0], data, size);
     return 0;

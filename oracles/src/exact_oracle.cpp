@@ -59,9 +59,8 @@ struct AddCounts {
 
 using Traits = CGAL::Arr_curve_data_traits_2<SegmentTraits, Counts, AddCounts>;
 constexpr unsigned kS = 1, kC = 2;
-constexpr std::size_t kMostAnswers = 30;
-// symmetricDifferenceAreas' relative accuracy (exact_oracle.h).
-constexpr double kSymmetricDifferenceTightness = 1e-9;  // parity bits of S, C and the answers in one unsigned
+constexpr std::size_t kMostAnswers = 30;  // parity bits of S, C and the answers in one unsigned
+constexpr double kSymmetricDifferenceTightness = 1e-9;  // symmetricDifferenceAreas' relative accuracy
 // Parity bits of S (kS), C (kC) and answer j (answerBit(j)), and how many rounding zones hold
 // the face.
 constexpr unsigned answerBit(std::size_t j) { return 4u << j; }
