@@ -139,17 +139,24 @@ TEST(DifferenceBound, SliverNarrowerThanItsIntervalIsMeasuredExactly) {
   EXPECT_EQ(oracle::symmetricDifferencesWithin({{small, smallTheirs}}, {smallSliver * (1 - 1e-6)}), std::vector<bool>{false});
 }
 
+// The exact variant's five answers to two random 8-gons (seeds seed and seed + offset), each
+// paired with itself with its constructed vertices moved by up to 3 ulps.
+std::vector<std::pair<Region, Region>> answersAndTheirTwins(std::uint64_t seed, std::uint64_t offset, std::mt19937_64& rng) {
+  const Region s{work::randomRing(8, seed)}, c{work::randomRing(8, seed + offset)};
+  std::vector<std::pair<Region, Region>> pairs;
+  for (Op op : kAllOps) {
+    const Region r = clip(s, c, op);
+    pairs.emplace_back(r, movedConstructed(r, s, c, 3, rng));
+  }
+  return pairs;
+}
+
 // Limits on either side of the exact area, as close as doubles allow: the decision is exact,
 // through the bound, the interval or exact arithmetic.
 TEST(DifferenceBound, WithinDecidesAsTheExactArea) {
   std::mt19937_64 rng(7);
   for (std::uint64_t seed = 1; seed <= 15; ++seed) {
-    const Region s{work::randomRing(8, seed)}, c{work::randomRing(8, seed + 77)};
-    std::vector<std::pair<Region, Region>> pairs;
-    for (Op op : kAllOps) {
-      const Region r = clip(s, c, op);
-      pairs.emplace_back(r, movedConstructed(r, s, c, 3, rng));
-    }
+    const auto pairs = answersAndTheirTwins(seed, 77, rng);
     const std::vector<double> areas = oracle::symmetricDifferenceAreas(pairs);
     std::vector<double> above, below;
     for (double a : areas) {
@@ -174,12 +181,7 @@ TEST(DifferenceBound, WithinDecidesAsTheExactArea) {
 TEST(DifferenceBound, WithinDecidesAlikeAtEveryScale) {
   std::mt19937_64 rng(11);
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-    const Region s{work::randomRing(8, seed)}, c{work::randomRing(8, seed + 91)};
-    std::vector<std::pair<Region, Region>> pairs;
-    for (Op op : kAllOps) {
-      const Region r = clip(s, c, op);
-      pairs.emplace_back(r, movedConstructed(r, s, c, 3, rng));
-    }
+    const auto pairs = answersAndTheirTwins(seed, 91, rng);
     const std::vector<double> areas = oracle::symmetricDifferenceAreas(pairs);
     for (int e : {-400, 400}) {
       std::vector<std::pair<Region, Region>> big;
