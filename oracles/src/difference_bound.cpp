@@ -36,8 +36,13 @@ struct Segment {
 
 bool lexLess(const Point& p, const Point& q) { return std::tie(p.x, p.y) < std::tie(q.x, q.y); }
 
+// A region's segments, without a normalized copy: a ring that normalized() would drop (fewer
+// than 3 distinct vertices) runs along each of its segments an even number of times, and they
+// cancel below anyway. Its coordinates are checked as normalized() checks them.
 void addSegments(const Region& region, std::vector<Segment>& out) {
-  for (const Ring& ring : normalized(region, OnBadRing::Drop)) {
+  for (std::size_t r = 0; r < region.size(); ++r) {
+    const Ring& ring = region[r];
+    detail::checkCoordinates(ring, r);
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
       Point p = ring[i], q = ring[(i + 1) % n];
       if (p == q) continue;
@@ -52,17 +57,17 @@ bool segmentLess(const Segment& s, const Segment& t) {
 }
 bool sameSegment(const Segment& s, const Segment& t) { return s.a == t.a && s.b == t.b; }
 
-// The segments that occur an odd number of times, sorted.
-std::vector<Segment> oddSegments(std::vector<Segment> all) {
-  std::sort(all.begin(), all.end(), segmentLess);
-  std::vector<Segment> odd;
-  for (std::size_t i = 0; i < all.size();) {
+// Keeps the segments that occur an odd number of times, once each, sorted.
+void keepOdd(std::vector<Segment>& segments) {
+  std::sort(segments.begin(), segments.end(), segmentLess);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < segments.size();) {
     std::size_t j = i + 1;
-    while (j < all.size() && sameSegment(all[j], all[i])) ++j;
-    if ((j - i) % 2 == 1) odd.push_back(all[i]);
+    while (j < segments.size() && sameSegment(segments[j], segments[i])) ++j;
+    if ((j - i) % 2 == 1) segments[kept++] = segments[i];
     i = j;
   }
-  return odd;
+  segments.resize(kept);
 }
 
 // An upper bound on twice the area of triangle (p, q, s): |(q - p) x (s - p)| computed in
@@ -74,21 +79,36 @@ double twiceTriangleBound(Point p, Point q, Point s) {
 }
 
 // The segments' ends, sorted, without repeats.
-std::vector<Point> vertexList(const std::vector<Segment>& segments) {
-  std::vector<Point> vertices;
+void listVertices(const std::vector<Segment>& segments, std::vector<Point>& vertices) {
+  vertices.clear();
   for (const Segment& s : segments) vertices.push_back(s.a), vertices.push_back(s.b);
   std::sort(vertices.begin(), vertices.end(), lexLess);
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  return vertices;
 }
+
+// Scratch kept per thread: the differential fuzz target asks for five bounds per execution, and
+// fresh vectors (from the sanitizers' allocator there) cost more than the bound's arithmetic.
+struct Scratch {
+  std::vector<Segment> odd, split, contracted;
+  std::vector<Point> before, vertices, representative;
+  std::vector<std::pair<double, Point>> on;  // (place along a segment, vertex)
+  std::vector<std::size_t> part;
+
+  std::size_t bytes() const {
+    return (odd.capacity() + split.capacity() + contracted.capacity()) * sizeof(Segment) +
+           (before.capacity() + vertices.capacity() + representative.capacity()) * sizeof(Point) +
+           on.capacity() * sizeof(on[0]) + part.capacity() * sizeof(std::size_t);
+  }
+};
 
 }  // namespace
 
-std::optional<double> symmetricDifferenceBound(const Region& a, const Region& b) {
-  std::vector<Segment> all;
-  addSegments(a, all);
-  addSegments(b, all);
-  std::vector<Segment> odd = oddSegments(std::move(all));
+static std::optional<double> boundUsing(const Region& a, const Region& b, Scratch& scratch) {
+  std::vector<Segment>& odd = scratch.odd;
+  odd.clear();
+  addSegments(a, odd);
+  addSegments(b, odd);
+  keepOdd(odd);
   if (odd.empty()) return 0.0;
 
   // `near`: far above the few ulps by which two answers' constructed vertices differ, far below
@@ -105,9 +125,11 @@ std::optional<double> symmetricDifferenceBound(const Region& a, const Region& b)
   // and the closed path p x1 q p, whose region is the triangle (p, x1, q); then x1 q likewise:
   // an edge that one answer splits (at a vertex of its own, or where the other answer's ring
   // crosses itself) and the other does not.
-  const std::vector<Point> before = vertexList(odd);
-  std::vector<Segment> split;
-  std::vector<std::pair<double, Point>> on;  // (place along the segment, vertex)
+  std::vector<Point>& before = scratch.before;
+  listVertices(odd, before);
+  std::vector<Segment>& split = scratch.split;
+  split.clear();
+  std::vector<std::pair<double, Point>>& on = scratch.on;
   for (const Segment& s : odd) {
     const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y, length2 = dx * dx + dy * dy;
     on.clear();
@@ -135,12 +157,15 @@ std::optional<double> symmetricDifferenceBound(const Region& a, const Region& b)
     }
     split.push_back(lexLess(from, s.b) ? Segment{from, s.b} : Segment{s.b, from});
   }
-  odd = oddSegments(std::move(split));
+  keepOdd(split);
+  odd.swap(split);
 
   // Representatives: a vertex's is the first vertex before it (lexicographically) within `near`
   // in both coordinates that is its own, else itself.
-  const std::vector<Point> vertices = vertexList(odd);
-  std::vector<Point> representative(vertices.size());
+  std::vector<Point>& vertices = scratch.vertices;
+  listVertices(odd, vertices);
+  std::vector<Point>& representative = scratch.representative;
+  representative.resize(vertices.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     representative[i] = vertices[i];
     for (std::size_t j = i; j-- > 0 && vertices[i].x - vertices[j].x <= near;) {
@@ -152,7 +177,8 @@ std::optional<double> symmetricDifferenceBound(const Region& a, const Region& b)
   auto indexOf = [&](const Point& v) {
     return static_cast<std::size_t>(std::lower_bound(vertices.begin(), vertices.end(), v, lexLess) - vertices.begin());
   };
-  std::vector<Segment> contracted;
+  std::vector<Segment>& contracted = scratch.contracted;
+  contracted.clear();
   for (const Segment& s : odd) {
     const Point rp = representative[indexOf(s.a)], rq = representative[indexOf(s.b)];
     if (rp != rq) contracted.push_back(lexLess(rp, rq) ? Segment{rp, rq} : Segment{rq, rp});
@@ -161,8 +187,10 @@ std::optional<double> symmetricDifferenceBound(const Region& a, const Region& b)
 
   // What the contracted segments leave (answers that truly differ): a closed set again, each of
   // its connected parts bounded by its fan triangles from one of its vertices.
-  const std::vector<Segment> left = oddSegments(std::move(contracted));
-  std::vector<std::size_t> part(vertices.size());
+  keepOdd(contracted);
+  const std::vector<Segment>& left = contracted;
+  std::vector<std::size_t>& part = scratch.part;
+  part.resize(vertices.size());
   for (std::size_t i = 0; i < part.size(); ++i) part[i] = i;
   auto root = [&](std::size_t i) {
     while (part[i] != i) i = part[i] = part[part[i]];
@@ -174,6 +202,13 @@ std::optional<double> symmetricDifferenceBound(const Region& a, const Region& b)
   // The sum of n non-negative doubles is within (1 + n u) of the true sum, n far below 2^20; the
   // last term covers halving a subnormal.
   return twice / 2 * (1 + 0x1p-30) + 0x1p-1074;
+}
+
+std::optional<double> symmetricDifferenceBound(const Region& a, const Region& b) {
+  thread_local Scratch scratch;
+  std::optional<double> bound = boundUsing(a, b, scratch);
+  if (scratch.bytes() > (std::size_t{64} << 20)) scratch = Scratch();  // a huge pair's is not kept
+  return bound;
 }
 
 }  // namespace gh::oracle
