@@ -9,6 +9,8 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/convex_hull_2.h>
 
+#include <gmp.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -462,7 +464,7 @@ std::vector<char> runsNear(const OperandLines& lines, const std::vector<Face>& w
 // `hull`), as curves whose zone count says on which side the zone lies; false when it has none
 // (no crossing is rounded).
 bool addRoundingZone(const OperandLines& lines, std::size_t i, int k, int ulps, std::vector<Traits::Curve_2>& curves,
-                     std::vector<KPoint>& zoneHull) {
+                     std::vector<Point>& zoneHull) {
   using HullKernel = CGAL::Exact_predicates_inexact_constructions_kernel;  // exact predicates
   std::vector<HullKernel::Point_2> corners;
   bool anyBox = false;
@@ -480,7 +482,7 @@ bool addRoundingZone(const OperandLines& lines, std::size_t i, int k, int ulps, 
   CGAL::convex_hull_2(corners.begin(), corners.end(), std::back_inserter(hull));  // counter-clockwise
   if (hull.size() < 3) return false;
   zoneHull.clear();
-  for (const auto& corner : hull) zoneHull.emplace_back(corner.x(), corner.y());
+  for (const auto& corner : hull) zoneHull.push_back({corner.x(), corner.y()});
   for (std::size_t j = 0; j < hull.size(); ++j) {
     const auto& p = hull[j];
     const auto& q = hull[(j + 1) % hull.size()];
@@ -612,6 +614,58 @@ void finish(AnswerJudgement& a, const Arrangement& arr, Op op, std::size_t j, co
 // of the exact-oracle fuzz target's time went into those), and an answer whose wrong faces each
 // lie in one zone needs none. Each verdict's seconds: its own judging and an equal share of
 // building the arrangements.
+// The side of a rational point p = (nx / dx, ny / dy) (lowest terms, positive denominators) of
+// the line through doubles a and b, exactly, in integers: a and b over their smallest power of
+// two 2^-s, the sign of (Bx - Ax) (ny 2^s - Ay dy) dx - (By - Ay) (nx 2^s - Ax dx) dy, which is
+// (b - a) x (p - a) times 2^2s dx dy > 0. The kernel's rational orientation divides out common
+// factors after every operation: the zone containment test spent most of its time there.
+class RationalSide {
+ public:
+  RationalSide() {
+    for (mpz_t& z : v_) mpz_init(z);
+  }
+  ~RationalSide() {
+    for (mpz_t& z : v_) mpz_clear(z);
+  }
+  RationalSide(const RationalSide&) = delete;
+  RationalSide& operator=(const RationalSide&) = delete;
+
+  int sign(Point a, Point b, const mpq_t px, const mpq_t py) {
+    int lowest = 0;
+    for (double x : {a.x, a.y, b.x, b.y}) {
+      if (x == 0) continue;
+      int e = 0;
+      std::frexp(x, &e);
+      lowest = std::min(lowest, e - 53);
+    }
+    const int s = -lowest;
+    integer(a.x, s, v_[0]), integer(a.y, s, v_[1]), integer(b.x, s, v_[2]), integer(b.y, s, v_[3]);
+    mpz_mul_2exp(v_[4], mpq_numref(py), static_cast<mp_bitcnt_t>(s));  // ny 2^s - Ay dy
+    mpz_mul(v_[5], v_[1], mpq_denref(py));
+    mpz_sub(v_[4], v_[4], v_[5]);
+    mpz_sub(v_[5], v_[2], v_[0]);
+    mpz_mul(v_[4], v_[4], v_[5]);
+    mpz_mul(v_[4], v_[4], mpq_denref(px));
+    mpz_mul_2exp(v_[6], mpq_numref(px), static_cast<mp_bitcnt_t>(s));  // nx 2^s - Ax dx
+    mpz_mul(v_[5], v_[0], mpq_denref(px));
+    mpz_sub(v_[6], v_[6], v_[5]);
+    mpz_sub(v_[5], v_[3], v_[1]);
+    mpz_mul(v_[6], v_[6], v_[5]);
+    mpz_mul(v_[6], v_[6], mpq_denref(py));
+    const int order = mpz_cmp(v_[4], v_[6]);
+    return order > 0 ? 1 : order < 0 ? -1 : 0;
+  }
+
+ private:
+  // x 2^s as an integer (s at least the places below x's lowest bit).
+  static void integer(double x, int s, mpz_t out) {
+    int e = 0;
+    mpz_set_d(out, std::ldexp(std::frexp(x, &e), 53));  // 0 for 0
+    mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(x == 0 ? 0 : e - 53 + s));
+  }
+  mpz_t v_[7];
+};
+
 std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const std::vector<Answer>& answers,
                                 const ExactOptions& options, int k) {
   const auto start = std::chrono::steady_clock::now();
@@ -634,7 +688,7 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
     const std::vector<char> near = runsNear(lines, anyWrong, k, options.constructionUlps);
     std::vector<Traits::Curve_2> zoneCurves;
     std::vector<std::size_t> zoneStart(near.size() + 1, 0);  // run i's curves: [start[i], start[i + 1])
-    std::vector<std::vector<KPoint>> hulls(near.size());
+    std::vector<std::vector<Point>> hulls(near.size());
     std::vector<char> zone(near.size(), 0);
     for (std::size_t i = 0; i < near.size(); ++i) {
       zone[i] = near[i] && addRoundingZone(lines, i, k, options.constructionUlps, zoneCurves, hulls[i]);
@@ -643,13 +697,22 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
     // A wrong face whose outer boundary lies in one zone (convex: decided at its vertices,
     // exactly) is rounding as a whole; an answer whose wrong faces all are needs no arrangement
     // of its own (most of the exact variant's: slivers along an edge, within one zone).
-    const auto orientation = Kernel().orientation_2_object();
-    auto inZone = [&](Face f, const std::vector<KPoint>& hull) {
+    // The zones' corners are doubles: a vertex's side of a zone edge is decided by intervals
+    // where they suffice, else exactly in integers (RationalSide).
+    RationalSide side;
+    auto inZone = [&](Face f, const std::vector<Point>& hull) {
       auto h = *f->outer_ccbs_begin(), first = h;
       do {
         const KPoint& p = h->source()->point();
+        const Interval px = certified(CGAL::approx(p).x()), py = certified(CGAL::approx(p).y());
         for (std::size_t m = 0; m < hull.size(); ++m) {
-          if (orientation(hull[m], hull[(m + 1) % hull.size()], p) == CGAL::RIGHT_TURN) return false;
+          const Point& a = hull[m];
+          const Point& b = hull[(m + 1) % hull.size()];
+          const Interval det = (Interval(b.x) - a.x) * (py - a.y) - (Interval(b.y) - a.y) * (px - a.x);
+          if (det.inf() > 0) continue;
+          if (det.sup() < 0) return false;
+          const auto& exact = CGAL::exact(p);
+          if (side.sign(a, b, exact.x().get_mpq_t(), exact.y().get_mpq_t()) < 0) return false;
         }
       } while (++h != first);
       return true;
