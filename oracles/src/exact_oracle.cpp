@@ -9,8 +9,6 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/convex_hull_2.h>
 
-#include <gmp.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -29,6 +27,7 @@
 #include "difference_bound.h"
 #include "judging_scale.h"
 #include "point_hash.h"
+#include "rational_orientation.h"
 #include "robust_segment_traits.h"
 
 namespace gh::oracle {
@@ -614,58 +613,6 @@ void finish(AnswerJudgement& a, const Arrangement& arr, Op op, std::size_t j, co
 // of the exact-oracle fuzz target's time went into those), and an answer whose wrong faces each
 // lie in one zone needs none. Each verdict's seconds: its own judging and an equal share of
 // building the arrangements.
-// The side of a rational point p = (nx / dx, ny / dy) (lowest terms, positive denominators) of
-// the line through doubles a and b, exactly, in integers: a and b over their smallest power of
-// two 2^-s, the sign of (Bx - Ax) (ny 2^s - Ay dy) dx - (By - Ay) (nx 2^s - Ax dx) dy, which is
-// (b - a) x (p - a) times 2^2s dx dy > 0. The kernel's rational orientation divides out common
-// factors after every operation: the zone containment test spent most of its time there.
-class RationalSide {
- public:
-  RationalSide() {
-    for (mpz_t& z : v_) mpz_init(z);
-  }
-  ~RationalSide() {
-    for (mpz_t& z : v_) mpz_clear(z);
-  }
-  RationalSide(const RationalSide&) = delete;
-  RationalSide& operator=(const RationalSide&) = delete;
-
-  int sign(Point a, Point b, const mpq_t px, const mpq_t py) {
-    int lowest = 0;
-    for (double x : {a.x, a.y, b.x, b.y}) {
-      if (x == 0) continue;
-      int e = 0;
-      std::frexp(x, &e);
-      lowest = std::min(lowest, e - 53);
-    }
-    const int s = -lowest;
-    integer(a.x, s, v_[0]), integer(a.y, s, v_[1]), integer(b.x, s, v_[2]), integer(b.y, s, v_[3]);
-    mpz_mul_2exp(v_[4], mpq_numref(py), static_cast<mp_bitcnt_t>(s));  // ny 2^s - Ay dy
-    mpz_mul(v_[5], v_[1], mpq_denref(py));
-    mpz_sub(v_[4], v_[4], v_[5]);
-    mpz_sub(v_[5], v_[2], v_[0]);
-    mpz_mul(v_[4], v_[4], v_[5]);
-    mpz_mul(v_[4], v_[4], mpq_denref(px));
-    mpz_mul_2exp(v_[6], mpq_numref(px), static_cast<mp_bitcnt_t>(s));  // nx 2^s - Ax dx
-    mpz_mul(v_[5], v_[0], mpq_denref(px));
-    mpz_sub(v_[6], v_[6], v_[5]);
-    mpz_sub(v_[5], v_[3], v_[1]);
-    mpz_mul(v_[6], v_[6], v_[5]);
-    mpz_mul(v_[6], v_[6], mpq_denref(py));
-    const int order = mpz_cmp(v_[4], v_[6]);
-    return order > 0 ? 1 : order < 0 ? -1 : 0;
-  }
-
- private:
-  // x 2^s as an integer (s at least the places below x's lowest bit).
-  static void integer(double x, int s, mpz_t out) {
-    int e = 0;
-    mpz_set_d(out, std::ldexp(std::frexp(x, &e), 53));  // 0 for 0
-    mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(x == 0 ? 0 : e - 53 + s));
-  }
-  mpz_t v_[7];
-};
-
 std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const std::vector<Answer>& answers,
                                 const ExactOptions& options, int k) {
   const auto start = std::chrono::steady_clock::now();
@@ -698,8 +645,8 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
     // exactly) is rounding as a whole; an answer whose wrong faces all are needs no arrangement
     // of its own (most of the exact variant's: slivers along an edge, within one zone).
     // The zones' corners are doubles: a vertex's side of a zone edge is decided by intervals
-    // where they suffice, else exactly in integers (RationalSide).
-    RationalSide side;
+    // where they suffice, else exactly in integers (rational_orientation.h), not in the kernel's
+    // rationals, which divide out common factors after every operation.
     auto inZone = [&](Face f, const std::vector<Point>& hull) {
       auto h = *f->outer_ccbs_begin(), first = h;
       do {
@@ -712,7 +659,7 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
           if (det.inf() > 0) continue;
           if (det.sup() < 0) return false;
           const auto& exact = CGAL::exact(p);
-          if (side.sign(a, b, exact.x().get_mpq_t(), exact.y().get_mpq_t()) < 0) return false;
+          if (orientationOfRational(a, b, exact.x().get_mpq_t(), exact.y().get_mpq_t()) < 0) return false;
         }
       } while (++h != first);
       return true;

@@ -1,9 +1,11 @@
 #include "ghoracle/exact_orientation.h"
 
 #include "filtered_orientation.h"
+#include "rational_orientation.h"
 
 #include <gmp.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace gh::oracle {
@@ -101,6 +103,56 @@ IntegerOrientation& integerStage() {
   return integer;
 }
 
+// orientationOfRational's integers: a and b times 2^s (s at least the places below their lowest
+// bits), then the sign of (Bx - Ax) (ny 2^s - Ay dy) dx - (By - Ay) (nx 2^s - Ax dx) dy, which is
+// (b - a) x (p - a) times 2^2s dx dy > 0 for p = (nx / dx, ny / dy) in lowest terms.
+class RationalSide {
+ public:
+  RationalSide() {
+    for (mpz_t& z : v_) mpz_init(z);
+  }
+  ~RationalSide() {
+    for (mpz_t& z : v_) mpz_clear(z);
+  }
+  RationalSide(const RationalSide&) = delete;
+  RationalSide& operator=(const RationalSide&) = delete;
+
+  int sign(Point a, Point b, const mpq_t px, const mpq_t py) {
+    int lowest = 0;
+    for (double x : {a.x, a.y, b.x, b.y}) {
+      if (x == 0) continue;
+      int e = 0;
+      std::frexp(x, &e);
+      lowest = std::min(lowest, e - 53);
+    }
+    const int s = -lowest;
+    integer(a.x, s, v_[0]), integer(a.y, s, v_[1]), integer(b.x, s, v_[2]), integer(b.y, s, v_[3]);
+    mpz_mul_2exp(v_[4], mpq_numref(py), static_cast<mp_bitcnt_t>(s));  // ny 2^s - Ay dy
+    mpz_mul(v_[5], v_[1], mpq_denref(py));
+    mpz_sub(v_[4], v_[4], v_[5]);
+    mpz_sub(v_[5], v_[2], v_[0]);
+    mpz_mul(v_[4], v_[4], v_[5]);
+    mpz_mul(v_[4], v_[4], mpq_denref(px));
+    mpz_mul_2exp(v_[6], mpq_numref(px), static_cast<mp_bitcnt_t>(s));  // nx 2^s - Ax dx
+    mpz_mul(v_[5], v_[0], mpq_denref(px));
+    mpz_sub(v_[6], v_[6], v_[5]);
+    mpz_sub(v_[5], v_[3], v_[1]);
+    mpz_mul(v_[6], v_[6], v_[5]);
+    mpz_mul(v_[6], v_[6], mpq_denref(py));
+    const int order = mpz_cmp(v_[4], v_[6]);
+    return order > 0 ? 1 : order < 0 ? -1 : 0;
+  }
+
+ private:
+  // x 2^s as an integer.
+  static void integer(double x, int s, mpz_t out) {
+    int e = 0;
+    mpz_set_d(out, std::ldexp(std::frexp(x, &e), 53));  // an integer; 0 for 0
+    if (x != 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(e - 53 + s));
+  }
+  mpz_t v_[7];
+};
+
 }  // namespace
 
 // Out of line (filtered_orientation.h): the filter that decides nearly every call stays small.
@@ -128,5 +180,10 @@ bool crossAtMost(Point a, Point b, Point p, double bound) {
 }
 
 int orientation(Point a, Point b, Point p) { return filteredOrientation(a, b, p); }
+
+int orientationOfRational(Point a, Point b, const mpq_t px, const mpq_t py) {
+  static thread_local RationalSide side;
+  return side.sign(a, b, px, py);
+}
 
 }  // namespace gh::oracle

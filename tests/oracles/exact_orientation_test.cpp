@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ghoracle/exact_orientation.h"
+#include "rational_orientation.h"
 
 namespace gh::oracle {
 namespace {
@@ -82,6 +83,34 @@ TEST(ExactOrientation, AgreesWithTheRationalDeterminantOnEveryStage) {
 
 // |(b - a) x (p - a)| <= bound against the rationals, with bounds at the determinant itself, an
 // ulp either side of it, far above and below, zero and subnormal, on the same inputs.
+// A rational point against a line through doubles (the exact oracle's zone edges): on the line
+// at rational parameters, a tiny rational step off it either way, and anywhere; coordinates from
+// every family, so that a and b lie over very different powers of two.
+TEST(ExactOrientation, RationalPointAgreesWithTheRationalDeterminant) {
+  std::mt19937_64 rng(20261127);
+  std::uniform_int_distribution<int> numerator(-7, 7), denominator(1, 9), kind(0, 2);
+  int zeros = 0, lefts = 0, rights = 0;
+  for (int i = 0; i < 50000; ++i) {
+    Point a, b, q;
+    if (!triple(rng, i, a, b, q)) continue;
+    const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y);
+    const mpq_class t(numerator(rng), denominator(rng));
+    mpq_class px = ax + t * (bx - ax), py = ay + t * (by - ay);
+    switch (kind(rng)) {
+      case 0: break;  // on the line
+      case 1: py += mpq_class(numerator(rng), 1) * mpq_class(q.y) / mpq_class(denominator(rng)) / 1024; break;
+      default: px = mpq_class(q.x) / denominator(rng), py = mpq_class(q.y) / denominator(rng); break;
+    }
+    px.canonicalize(), py.canonicalize();
+    const int expected = sgn(mpq_class((bx - ax) * (py - ay) - (by - ay) * (px - ax)));
+    ASSERT_EQ(orientationOfRational(a, b, px.get_mpq_t(), py.get_mpq_t()), expected) << describe(a, b, q) << " " << px << " " << py;
+    (expected == 0 ? zeros : expected > 0 ? lefts : rights) += 1;
+  }
+  EXPECT_GT(zeros, 5000);
+  EXPECT_GT(lefts, 5000);
+  EXPECT_GT(rights, 5000);
+}
+
 TEST(ExactOrientation, CrossAtMostAgreesWithTheRationalDeterminant) {
   std::mt19937_64 rng(20261126);
   int within = 0, beyond = 0;
