@@ -127,23 +127,23 @@ class RationalSide {
     }
     const int s = -lowest;
     integer(a.x, s, v_[0]), integer(a.y, s, v_[1]), integer(b.x, s, v_[2]), integer(b.y, s, v_[3]);
-    mpz_mul_2exp(v_[4], mpq_numref(py), static_cast<mp_bitcnt_t>(s));  // ny 2^s - Ay dy
-    mpz_mul(v_[5], v_[1], mpq_denref(py));
-    mpz_sub(v_[4], v_[4], v_[5]);
-    mpz_sub(v_[5], v_[2], v_[0]);
-    mpz_mul(v_[4], v_[4], v_[5]);
-    mpz_mul(v_[4], v_[4], mpq_denref(px));
-    mpz_mul_2exp(v_[6], mpq_numref(px), static_cast<mp_bitcnt_t>(s));  // nx 2^s - Ax dx
-    mpz_mul(v_[5], v_[0], mpq_denref(px));
-    mpz_sub(v_[6], v_[6], v_[5]);
-    mpz_sub(v_[5], v_[3], v_[1]);
-    mpz_mul(v_[6], v_[6], v_[5]);
-    mpz_mul(v_[6], v_[6], mpq_denref(py));
+    product(v_[4], py, v_[1], v_[2], v_[0], px, s);  // (ny 2^s - Ay dy) (Bx - Ax) dx
+    product(v_[6], px, v_[0], v_[3], v_[1], py, s);  // (nx 2^s - Ax dx) (By - Ay) dy
     const int order = mpz_cmp(v_[4], v_[6]);
     return order > 0 ? 1 : order < 0 ? -1 : 0;
   }
 
  private:
+  // (n 2^s - A d) (B' - A') e into out, for q = n / d and r's denominator e (v_[5] is scratch).
+  void product(mpz_t out, const mpq_t q, const mpz_t A, const mpz_t Bprime, const mpz_t Aprime, const mpq_t r, int s) {
+    mpz_mul_2exp(out, mpq_numref(q), static_cast<mp_bitcnt_t>(s));
+    mpz_mul(v_[5], A, mpq_denref(q));
+    mpz_sub(out, out, v_[5]);
+    mpz_sub(v_[5], Bprime, Aprime);
+    mpz_mul(out, out, v_[5]);
+    mpz_mul(out, out, mpq_denref(r));
+  }
+
   // x 2^s as an integer.
   static void integer(double x, int s, mpz_t out) {
     int e = 0;
