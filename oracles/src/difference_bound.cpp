@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "filtered_orientation.h"
 #include "ghclip/validate.h"
 
 namespace gh::oracle {
@@ -71,11 +72,11 @@ void keepOdd(std::vector<Segment>& segments) {
 }
 
 // An upper bound on twice the area of triangle (p, q, s): |(q - p) x (s - p)| computed in
-// doubles plus the bound on its rounding error (Shewchuk's orientation filter, with room for
-// products below the normal range). Infinite or NaN when a product overflows.
+// doubles plus the judges' orientation filter's bound on its rounding error, with room for
+// products below the normal range. Infinite or NaN when a product overflows.
 double twiceTriangleBound(Point p, Point q, Point s) {
   const double l = (q.x - p.x) * (s.y - p.y), r = (q.y - p.y) * (s.x - p.x);
-  return std::abs(l - r) + 0x1.0000000000002p-51 * (std::abs(l) + std::abs(r)) + 0x1p-1070;
+  return std::abs(l - r) + kOrientationErrorFactor * (std::abs(l) + std::abs(r)) + 0x1p-1070;
 }
 
 // The segments' ends, sorted, without repeats.

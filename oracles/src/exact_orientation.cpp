@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace gh::oracle {
 namespace {
@@ -26,6 +27,27 @@ bool exactProduct(double x, double y, double& p) {
   p = x * y;
   if (x == 0 || y == 0) return true;
   return std::isfinite(p) && std::abs(p) > 0x1p-900 && std::fma(x, y, -p) == 0;
+}
+
+// Each non-zero double is m 2^(e - 53) with m an integer of at most 53 bits: the smallest such
+// e - 53 among xs, the place of their lowest bit (0 when all are 0).
+int lowestPlace(std::initializer_list<double> xs) {
+  int lowest = 0;
+  bool any = false;
+  for (double x : xs) {
+    if (x == 0) continue;
+    int e = 0;
+    std::frexp(x, &e);
+    lowest = any ? std::min(lowest, e - 53) : e - 53, any = true;
+  }
+  return lowest;
+}
+
+// x 2^-lowest, an integer when lowest is at most x's lowest place, into out.
+void setOverPowerOfTwo(mpz_t out, double x, int lowest) {
+  int e = 0;
+  mpz_set_d(out, std::ldexp(std::frexp(x, &e), 53));  // an integer; 0 for 0
+  if (x != 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(e - 53 - lowest));
 }
 
 // The GMP stage: the six coordinates as integers over their smallest power of two (no fractions,
@@ -70,21 +92,8 @@ class IntegerOrientation {
   // lowest.
   int determinant(Point a, Point b, Point p) {
     const double c[6] = {a.x, a.y, b.x, b.y, p.x, p.y};
-    // Each non-zero coordinate is m * 2^(e - 53) with m an integer of at most 53 bits.
-    int lowest = 0;
-    bool any = false;
-    for (double x : c) {
-      if (x == 0) continue;
-      int e = 0;
-      std::frexp(x, &e);
-      lowest = any ? std::min(lowest, e - 53) : e - 53, any = true;
-    }
-    for (int i = 0; i < 6; ++i) {
-      int e = 0;
-      const double m = std::ldexp(std::frexp(c[i], &e), 53);  // an integer; 0 for 0
-      mpz_set_d(v_[i], m);
-      if (c[i] != 0) mpz_mul_2exp(v_[i], v_[i], static_cast<mp_bitcnt_t>(e - 53 - lowest));
-    }
+    const int lowest = lowestPlace({a.x, a.y, b.x, b.y, p.x, p.y});
+    for (int i = 0; i < 6; ++i) setOverPowerOfTwo(v_[i], c[i], lowest);
     // (bx - ax) * (py - ay) - (by - ay) * (px - ax)
     mpz_sub(v_[2], v_[2], v_[0]);  // bx - ax
     mpz_sub(v_[5], v_[5], v_[1]);  // py - ay
@@ -118,15 +127,9 @@ class RationalSide {
   RationalSide& operator=(const RationalSide&) = delete;
 
   int sign(Point a, Point b, const mpq_t px, const mpq_t py) {
-    int lowest = 0;
-    for (double x : {a.x, a.y, b.x, b.y}) {
-      if (x == 0) continue;
-      int e = 0;
-      std::frexp(x, &e);
-      lowest = std::min(lowest, e - 53);
-    }
-    const int s = -lowest;
-    integer(a.x, s, v_[0]), integer(a.y, s, v_[1]), integer(b.x, s, v_[2]), integer(b.y, s, v_[3]);
+    const int lowest = std::min(0, lowestPlace({a.x, a.y, b.x, b.y})), s = -lowest;  // p's numerators shift by s >= 0
+    setOverPowerOfTwo(v_[0], a.x, lowest), setOverPowerOfTwo(v_[1], a.y, lowest);
+    setOverPowerOfTwo(v_[2], b.x, lowest), setOverPowerOfTwo(v_[3], b.y, lowest);
     product(v_[4], py, v_[1], v_[2], v_[0], px, s);  // (ny 2^s - Ay dy) (Bx - Ax) dx
     product(v_[6], px, v_[0], v_[3], v_[1], py, s);  // (nx 2^s - Ax dx) (By - Ay) dy
     const int order = mpz_cmp(v_[4], v_[6]);
@@ -144,12 +147,6 @@ class RationalSide {
     mpz_mul(out, out, mpq_denref(r));
   }
 
-  // x 2^s as an integer.
-  static void integer(double x, int s, mpz_t out) {
-    int e = 0;
-    mpz_set_d(out, std::ldexp(std::frexp(x, &e), 53));  // an integer; 0 for 0
-    if (x != 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(e - 53 + s));
-  }
   mpz_t v_[7];
 };
 

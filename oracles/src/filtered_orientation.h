@@ -11,6 +11,11 @@
 
 namespace gh::oracle {
 
+// The filter's error factor: |(computed l - r) - exact| <= kOrientationErrorFactor (|l| + |r|)
+// for l = (b.x - a.x) (p.y - a.y), r = (b.y - a.y) (p.x - a.x) in doubles while nothing under-
+// or overflows (Shewchuk's (3 + 16u) u, rounded up to the next power of two and an ulp).
+inline constexpr double kOrientationErrorFactor = 0x1.0000000000002p-51;
+
 // The stages beyond the filter (exact_orientation.cpp): exact doubles, then GMP integers.
 int orientationBeyondFilter(Point a, Point b, Point p);
 
@@ -18,7 +23,7 @@ int orientationBeyondFilter(Point a, Point b, Point p);
 inline int filteredOrientation(Point a, Point b, Point p) {
   const double l = (b.x - a.x) * (p.y - a.y), r = (b.y - a.y) * (p.x - a.x);
   const double det = l - r, magnitude = std::abs(l) + std::abs(r);
-  if (std::isfinite(magnitude) && magnitude > 0x1p-900 && std::abs(det) > 0x1.0000000000002p-51 * magnitude) {
+  if (std::isfinite(magnitude) && magnitude > 0x1p-900 && std::abs(det) > kOrientationErrorFactor * magnitude) {
     return det > 0 ? 1 : -1;
   }
   return orientationBeyondFilter(a, b, p);

@@ -55,7 +55,7 @@ void forUniformPoints(const Box& box, std::uint64_t seed, std::size_t count, F&&
 // replaced took 12,000 instructions a call, 8 % of fuzz_clip_exact's, for 0.6 % of the calls).
 bool lineDistanceAtMost(Point a, Point b, Point p, double bound) {
   const double l = (b.x - a.x) * (p.y - a.y), r = (b.y - a.y) * (p.x - a.x);
-  const double det = std::abs(l - r), error = 0x1.0000000000002p-51 * (std::abs(l) + std::abs(r));
+  const double det = std::abs(l - r), error = kOrientationErrorFactor * (std::abs(l) + std::abs(r));
   if (std::isfinite(det) && std::isfinite(error) && std::abs(l) + std::abs(r) > 0x1p-900) {
     if (det + error <= bound) return true;
     if (det - error > bound) return false;
