@@ -29,6 +29,79 @@ bool exactProduct(double x, double y, double& p) {
   return std::isfinite(p) && std::abs(p) > 0x1p-900 && std::fma(x, y, -p) == 0;
 }
 
+// Knuth's two-sum: s + e == a + b exactly, s the rounded sum (no overflow; exact with gradual
+// underflow too).
+void twoSum(double a, double b, double& s, double& e) {
+  s = a + b;
+  const double bv = s - a, av = s - bv;
+  e = (a - av) + (b - bv);
+}
+
+// A sum of doubles kept exactly as a non-overlapping expansion (Shewchuk, "Adaptive precision
+// floating-point arithmetic and fast robust geometric predicates", 1997): components in
+// increasing magnitude, zeros left out, so that the sum's sign is its largest component's.
+class Expansion {
+ public:
+  // Grow-Expansion with zero elimination: the expansion stays non-overlapping and increasing for
+  // any double added (no overflow).
+  void add(double b) {
+    double q = b;
+    int m = 0;
+    for (int i = 0; i < n_; ++i) {
+      double sum, error;
+      twoSum(q, c_[i], sum, error);
+      if (error != 0) c_[m++] = error;
+      q = sum;
+    }
+    if (q != 0) c_[m++] = q;
+    n_ = m;
+  }
+  // x * y exactly, by the fma's error (exact where the caller's range guarantees it).
+  void addProduct(double x, double y) {
+    if (x == 0 || y == 0) return;
+    const double p = x * y;
+    add(std::fma(x, y, -p));
+    add(p);
+  }
+  int sign() const { return n_ == 0 ? 0 : c_[n_ - 1] > 0 ? 1 : -1; }
+
+ private:
+  double c_[34];  // at most one component per double added (16 for a determinant, 2 bounds)
+  int n_ = 0;
+};
+
+// Whether the expansion stage below is exact for these coordinates: each 0 or of magnitude in
+// [2^-480, 2^500]. Then a difference's two parts are at most 2^501 and multiples of 2^-532 (the
+// lowest place of the smaller operand), the products of parts at most 2^1002 and multiples of
+// 2^-1064, so every fma error is a representable double (exact), nothing overflows, and a
+// product rounded into the subnormals has no error at all (it is a multiple of 2^-1064 within
+// half of 2^-1074 of a double).
+bool inExpansionRange(std::initializer_list<double> xs) {
+  for (double x : xs) {
+    const double m = std::abs(x);
+    if (x != 0 && !(m >= 0x1p-480 && m <= 0x1p500)) return false;
+  }
+  return true;
+}
+
+// (b - a) x (p - a) as an exact expansion: each difference as its rounded value and two-sum error,
+// then the sixteen products of their parts, each with its fma error.
+Expansion determinantExpansion(Point a, Point b, Point p) {
+  double d[4], e[4];
+  twoSum(b.x, -a.x, d[0], e[0]);  // bx - ax
+  twoSum(p.y, -a.y, d[1], e[1]);  // py - ay
+  twoSum(b.y, -a.y, d[2], e[2]);  // by - ay
+  twoSum(p.x, -a.x, d[3], e[3]);  // px - ax
+  Expansion det;
+  for (double l : {d[0], e[0]}) {
+    for (double r : {d[1], e[1]}) det.addProduct(l, r);
+  }
+  for (double l : {d[2], e[2]}) {
+    for (double r : {d[3], e[3]}) det.addProduct(-l, r);
+  }
+  return det;
+}
+
 // Each non-zero double is m 2^(e - 53) with m an integer of at most 53 bits: the smallest such
 // e - 53 among xs, the place of their lowest bit (0 when all are 0).
 int lowestPlace(std::initializer_list<double> xs) {
@@ -161,6 +234,9 @@ int orientationBeyondFilter(Point a, Point b, Point p) {
       exactDifference(p.x, a.x, px) && exactProduct(bx, py, el) && exactProduct(by, px, er)) {
     return el > er ? 1 : el < er ? -1 : 0;
   }
+  // Near a coarse grid (ulps off it, 2^-k off it): exact expansions of doubles, with no GMP and
+  // nothing allocated, where the coordinates' range keeps them exact.
+  if (inExpansionRange({a.x, a.y, b.x, b.y, p.x, p.y})) return determinantExpansion(a, b, p).sign();
   return integerStage().sign(a, b, p);
 }
 
@@ -172,6 +248,13 @@ bool crossAtMost(Point a, Point b, Point p, double bound) {
       exactDifference(p.x, a.x, px) && exactProduct(bx, py, el) && exactProduct(by, px, er) &&
       exactDifference(el, er, det)) {
     return std::abs(det) <= bound;
+  }
+  if (inExpansionRange({a.x, a.y, b.x, b.y, p.x, p.y})) {
+    if (bound > 0x1p1008) return true;  // |det| <= 16 2^1002: and bound +- det cannot overflow
+    // |det| <= bound iff det - bound <= 0 and det + bound >= 0.
+    Expansion below = determinantExpansion(a, b, p), above = below;
+    below.add(-bound), above.add(bound);
+    return below.sign() <= 0 && above.sign() >= 0;
   }
   return integerStage().atMost(a, b, p, bound);
 }

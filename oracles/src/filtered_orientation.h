@@ -16,7 +16,8 @@ namespace gh::oracle {
 // or overflows (Shewchuk's (3 + 16u) u, rounded up to the next power of two and an ulp).
 inline constexpr double kOrientationErrorFactor = 0x1.0000000000002p-51;
 
-// The stages beyond the filter (exact_orientation.cpp): exact doubles, then GMP integers.
+// The stages beyond the filter (exact_orientation.cpp): exact doubles, exact expansions of
+// doubles, then GMP integers.
 int orientationBeyondFilter(Point a, Point b, Point p);
 
 // Sign of (b - a) x (p - a), exactly: Shewchuk's filter in doubles, then the stages beyond it.

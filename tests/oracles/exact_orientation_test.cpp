@@ -1,7 +1,8 @@
 // The judges' orientation against the plain rational determinant (GMP's mpq, no filter, no
 // shortcut) on inputs built to reach each of its stages: the double filter, the exact-double
-// comparison of collinear grid points, and the integer stage (ulp-apart, huge and subnormal
-// coordinates, differences that overflow, products that underflow).
+// comparison of collinear grid points, the exact expansions of doubles (points ulps off the grid
+// or off a line), and the integer stage (huge and subnormal coordinates, differences that
+// overflow, products that underflow).
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -131,6 +132,38 @@ TEST(ExactOrientation, CrossAtMostAgreesWithTheRationalDeterminant) {
   }
   EXPECT_GT(within, 50000);
   EXPECT_GT(beyond, 50000);
+}
+
+// Points a few ulps off a line through points off the grid, so that neither the filter nor the
+// exact-double comparison decides: the expansion stage's work, at scales across its range
+// ([2^-480, 2^500]) and just beyond it on either side (the integer stage's), against the rationals.
+TEST(ExactOrientation, NearlyCollinearPointsOffTheGridAtEveryScale) {
+  std::mt19937_64 rng(20261128);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> ulps(-2, 2), step(-4, 4);
+  const int scales[] = {-532, -481, -480, -479, -300, -60, 0, 60, 300, 499, 500, 501, 520};
+  int zeros = 0, nonzeros = 0;
+  for (int scale : scales) {
+    for (int i = 0; i < 4000; ++i) {
+      const Point a{std::ldexp(unit(rng), scale), std::ldexp(unit(rng), scale)};
+      const Point b{std::ldexp(unit(rng), scale), std::ldexp(unit(rng), scale)};
+      const double t = step(rng) / 4.0;
+      Point p{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+      for (int k = ulps(rng); k != 0; k += k > 0 ? -1 : 1) p.y = std::nextafter(p.y, k > 0 ? 1e308 : -1e308);
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+      const int expected = rationalOrientation(a, b, p);
+      ASSERT_EQ(orientation(a, b, p), expected) << "scale 2^" << scale << " " << describe(a, b, p);
+      (expected == 0 ? zeros : nonzeros) += 1;
+      const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), px(p.x), py(p.y);
+      const mpq_class cross = abs(mpq_class((bx - ax) * (py - ay) - (by - ay) * (px - ax)));
+      const double near = cross.get_d();
+      for (double bound : {near, std::nextafter(near, 0.0), std::nextafter(near, 1e308)}) {
+        ASSERT_EQ(crossAtMost(a, b, p, bound), cross <= mpq_class(bound)) << describe(a, b, p) << " bound " << std::hexfloat << bound;
+      }
+    }
+  }
+  EXPECT_GT(zeros, 1000);
+  EXPECT_GT(nonzeros, 20000);
 }
 
 TEST(ExactOrientation, CasesNearTheStagesLimits) {
