@@ -12,12 +12,19 @@
 namespace gh::oracle {
 namespace {
 
-// a - b as a double when that is exact (Knuth's two-sum error is zero), else nothing.
+// Knuth's two-sum: s + e == a + b exactly, s the rounded sum (no overflow; exact with gradual
+// underflow too).
+void twoSum(double a, double b, double& s, double& e) {
+  s = a + b;
+  const double bv = s - a, av = s - bv;
+  e = (a - av) + (b - bv);
+}
+
+// a - b as a double when that is exact (the two-sum error is zero), else nothing.
 bool exactDifference(double a, double b, double& d) {
-  d = a - b;
-  if (!std::isfinite(d)) return false;
-  const double bv = a - d, av = d + bv;
-  return (a - av) + (bv - b) == 0;
+  double error;
+  twoSum(a, -b, d, error);
+  return std::isfinite(d) && error == 0;
 }
 
 // x * y as a double when that is exact: not overflowed, far from the subnormals (where the fma's
@@ -27,14 +34,6 @@ bool exactProduct(double x, double y, double& p) {
   p = x * y;
   if (x == 0 || y == 0) return true;
   return std::isfinite(p) && std::abs(p) > 0x1p-900 && std::fma(x, y, -p) == 0;
-}
-
-// Knuth's two-sum: s + e == a + b exactly, s the rounded sum (no overflow; exact with gradual
-// underflow too).
-void twoSum(double a, double b, double& s, double& e) {
-  s = a + b;
-  const double bv = s - a, av = s - bv;
-  e = (a - av) + (b - bv);
 }
 
 // A sum of doubles kept exactly as a non-overlapping expansion (Shewchuk, "Adaptive precision
@@ -66,7 +65,7 @@ class Expansion {
   int sign() const { return n_ == 0 ? 0 : c_[n_ - 1] > 0 ? 1 : -1; }
 
  private:
-  double c_[34];  // at most one component per double added (16 for a determinant, 2 bounds)
+  double c_[17];  // at most one component per double added: 16 for a determinant, 1 bound
   int n_ = 0;
 };
 

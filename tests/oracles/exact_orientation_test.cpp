@@ -20,10 +20,13 @@
 namespace gh::oracle {
 namespace {
 
-int rationalOrientation(Point a, Point b, Point p) {
+// (b - a) x (p - a) in rationals.
+mpq_class rationalDeterminant(Point a, Point b, Point p) {
   const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), px(p.x), py(p.y);
-  return sgn(mpq_class((bx - ax) * (py - ay) - (by - ay) * (px - ax)));
+  return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
 }
+
+int rationalOrientation(Point a, Point b, Point p) { return sgn(rationalDeterminant(a, b, p)); }
 
 // A coordinate from a family chosen by the generator: grid integers, grid values moved by an
 // ulp or by 2^-k, halves and quarters of huge and tiny powers of two, subnormals, and raw random
@@ -118,8 +121,7 @@ TEST(ExactOrientation, CrossAtMostAgreesWithTheRationalDeterminant) {
   for (int i = 0; i < 100000; ++i) {
     Point a, b, p;
     if (!triple(rng, i, a, b, p)) continue;
-    const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), px(p.x), py(p.y);
-    const mpq_class cross = abs(mpq_class((bx - ax) * (py - ay) - (by - ay) * (px - ax)));
+    const mpq_class cross = abs(rationalDeterminant(a, b, p));
     const double near = cross.get_d();  // within an ulp of the exact value
     const double bounds[] = {near, std::nextafter(near, 0.0), std::nextafter(near, 1e308), 2 * near, near / 2, 0.0,
                              std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max()};
@@ -154,8 +156,7 @@ TEST(ExactOrientation, NearlyCollinearPointsOffTheGridAtEveryScale) {
       const int expected = rationalOrientation(a, b, p);
       ASSERT_EQ(orientation(a, b, p), expected) << "scale 2^" << scale << " " << describe(a, b, p);
       (expected == 0 ? zeros : nonzeros) += 1;
-      const mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), px(p.x), py(p.y);
-      const mpq_class cross = abs(mpq_class((bx - ax) * (py - ay) - (by - ay) * (px - ax)));
+      const mpq_class cross = abs(rationalDeterminant(a, b, p));
       const double near = cross.get_d();
       for (double bound : {near, std::nextafter(near, 0.0), std::nextafter(near, 1e308)}) {
         ASSERT_EQ(crossAtMost(a, b, p, bound), cross <= mpq_class(bound)) << describe(a, b, p) << " bound " << std::hexfloat << bound;
