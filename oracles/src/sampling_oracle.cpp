@@ -743,7 +743,7 @@ class RaysFrom {
 
 // The points around a vertex q, in a fixed order: eight directions from the vertex's phase and
 // both ways along each corner's bisector, at radii global (extent * 2^-8 .. 2^-26) and local (a
-// corner's shorter edge * 2^-2 .. 2^-20). `corners` holds the distinct corners (the neighbours
+// corner's shorter edge * 2^-2 .. 2^-20, a smaller corner's within a factor 2). `corners` holds the distinct corners (the neighbours
 // on a ring) of every ring of S, C and the answers through q: the vertex is visited once, with
 // one clearance and one fan, and each corner gets the radii it would get alone (below), the
 // union sampled once. (Visiting it once per corner cost 46 % more instructions on the clip
@@ -785,7 +785,14 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
                   double delta, Clearance&& clearanceBelow, WiderClearance&& widerClearance, Visit&& visit,
                   Separated&& separated, const std::vector<Point>& fan) {
   const double pi = std::acos(-1.0);
-  // Each corner's own scale: its shorter non-zero edge (distinct ones once).
+  // Each corner's own scale: its shorter non-zero edge. Scales within a factor 2 of a smaller
+  // one are sampled at that one's radii (at most 2 times nearer q than their own, never farther):
+  // the corners of the answers' rings through a vertex often differ by a few per cent in length
+  // (a crossing's neighbours on the five answers, a vertex the paper arithmetic moved), and each
+  // distinct scale cost four radii of ten directions or more. On the clip targets' corpora (seed,
+  // regression and grown: 1,479 naive and sweep inputs, 785 exact) this judged 12 % (naive,
+  // sweep) to 21 % (exact) fewer points with the same verdict on every answer; merging within a
+  // factor 8, one naive answer fewer was found wrong.
   thread_local std::vector<double> locals;
   locals.clear();
   for (const auto& [prev, next] : corners) {
@@ -794,8 +801,14 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
       const double length = std::hypot(o.x / 2 - q.x / 2, o.y / 2 - q.y / 2) * 2;
       if (length > 0) local = std::min(local, length);
     }
-    if (std::isfinite(local) && std::find(locals.begin(), locals.end(), local) == locals.end()) locals.push_back(local);
+    if (std::isfinite(local)) locals.push_back(local);
   }
+  std::sort(locals.begin(), locals.end());
+  std::size_t distinct = 0;
+  for (double local : locals) {
+    if (distinct == 0 || local > 2 * locals[distinct - 1]) locals[distinct++] = local;
+  }
+  locals.resize(distinct);
   const double phase = phaseOf(q, seed);
   // Both ways along the bisector of each corner too: a thin spike (a ring of a 1e-10 star tip)
   // lies between two of the eight rays, never across the bisector.
