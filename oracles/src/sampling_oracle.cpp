@@ -17,6 +17,7 @@
 #include "point_table.h"
 #include "pooled_vector.h"
 #include "ulp.h"
+#include "uniform_double.h"
 
 namespace gh::oracle {
 namespace {
@@ -41,10 +42,9 @@ struct Box {
 template <class F>
 void forUniformPoints(const Box& box, std::uint64_t seed, std::size_t count, F&& f) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> ux(box.minX, box.maxX), uy(box.minY, box.maxY);
   for (std::size_t i = 0; i < count; ++i) {
-    const double x = ux(rng);
-    const Point p{x, uy(rng)};
+    const double x = uniformIn(rng, box.minX, box.maxX);
+    const Point p{x, uniformIn(rng, box.minY, box.maxY)};
     if (std::isfinite(p.x) && std::isfinite(p.y)) f(p);
   }
 }
@@ -1152,7 +1152,14 @@ class Sampler {
     auto sideOf = [&](std::size_t i, Point p, std::uint8_t state) {
       return (state & kSkipped) ? std::nullopt : sideIn(i, p);
     };
+    // With stopWhenAllFail, nothing more is judged once every answer has a mismatch, and an
+    // answer that has one gets no points of its own beyond S and C's box (SampleOptions).
+    const bool stopEarly = options_.stopWhenAllFail;
+    auto allFail = [&] {
+      return stopEarly && std::all_of(verdicts.begin(), verdicts.end(), [](const SampleVerdict& v) { return v.mismatched > 0; });
+    };
     for (const auto& [p, state] : uniform_) {
+      if (allFail()) break;
       forget();
       for (std::size_t i = 0; i < n; ++i) judge(verdicts[i], answers[i].op, p, state, sideOf(i, p, state));
     }
@@ -1160,7 +1167,7 @@ class Sampler {
     // perturbation moves vertices) is sampled there too: of as many points drawn uniformly over the
     // box of S, C and the answer, those that land outside S and C's box.
     for (std::size_t i = 0; i < n; ++i) {
-      if (box_.holds(reach[i])) continue;
+      if (box_.holds(reach[i]) || (stopEarly && verdicts[i].mismatched > 0)) continue;
       forUniformPoints(reach[i], mixBits(options_.seed ^ 0xB0C5B0C5B0C5B0C5ull), options_.uniformPoints, [&](Point p) {
         if (box_.holds(p)) return;
         const std::uint8_t state = sides(p);
@@ -1168,7 +1175,7 @@ class Sampler {
         judge(verdicts[i], answers[i].op, p, state, sideOf(i, p, state));
       });
     }
-    if (options_.nearVertices) {
+    if (options_.nearVertices && !allFail()) {
       const AnswerSegments segments(answers);
       const SegmentGrid& answerGrid = segments.grid;
       rays_.resize(n);
@@ -1231,7 +1238,7 @@ class Sampler {
         for (const Corner& c : cornersAt_) grouped[next[c.vertex]++] = c;
         cornersAt_.swap(grouped);
       }
-      for (std::size_t first = 0, last; first < cornersAt_.size(); first = last) {
+      for (std::size_t first = 0, last; first < cornersAt_.size() && !allFail(); first = last) {
         for (last = first + 1; last < cornersAt_.size() && cornersAt_[last].vertex == cornersAt_[first].vertex; ++last) {
         }
         // This vertex's corners, each once (in either order).

@@ -656,5 +656,47 @@ TEST(SamplingOracle, EachCornerThroughAVertexIsJudgedAtItsOwnScale) {
   EXPECT_TRUE(oracle::SamplingJudge(s, c, options).check(Op::Union, clip(s, c, Op::Union)).pass());
 }
 
+// The fuzz targets' judge stops once every answer has a mismatch (stopWhenAllFail): the answers'
+// verdicts and first mismatches stay the full check's, one found only near a vertex (the union
+// above) beside one found among the first uniform points included; and it does stop.
+TEST(SamplingOracle, StoppingWhenEveryAnswerFailedKeepsEveryVerdict) {
+  const Region s = io::readWkt("POLYGON((0 0,6 0,6 6,0 6,0 0))");
+  const Region c = io::readWkt("POLYGON((3 1,9 1,9 7,3 7,3 1))");
+  const Region right = clip(s, c, Op::Union);
+  // The union with a notch 1e-3 deep at (6 6): judged wrong near that vertex, nowhere else.
+  const Region notched = io::readWkt("POLYGON((0 0,6 0,6 1,9 1,9 7,3 7,3 6,5.999 6,6 5.999,6 6,3 6,0 6,0 0))");
+  oracle::SampleOptions full;
+  full.uniformPoints = 200;
+  oracle::SampleOptions stopping = full;
+  stopping.stopWhenAllFail = true;
+  const std::vector<std::pair<Op, const Region*>> answers = {
+      {Op::Union, &notched}, {Op::Difference, &c}, {Op::Union, &right}, {Op::Intersection, &s}};
+  const auto a = oracle::SamplingJudge(s, c, full).check(answers);
+  const auto b = oracle::SamplingJudge(s, c, stopping).check(answers);
+  const std::vector<bool> pass = {false, false, true, false};
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    EXPECT_EQ(a[i].pass(), pass[i]) << i;
+    EXPECT_EQ(b[i].pass(), pass[i]) << i;
+    EXPECT_EQ(a[i].firstMismatch.has_value(), b[i].firstMismatch.has_value()) << i;
+    if (a[i].firstMismatch && b[i].firstMismatch) {
+      EXPECT_EQ(a[i].firstMismatch->x, b[i].firstMismatch->x) << i;
+      EXPECT_EQ(a[i].firstMismatch->y, b[i].firstMismatch->y) << i;
+    }
+  }
+  // The notched union is found wrong only near its vertices: not among the uniform points.
+  oracle::SampleOptions uniformOnly = full;
+  uniformOnly.nearVertices = false;
+  EXPECT_TRUE(oracle::SamplingJudge(s, c, uniformOnly).check(Op::Union, notched).pass());
+  // Every answer wrong: it stops, at fewer points than the full check judges.
+  const std::vector<std::pair<Op, const Region*>> wrong = {{Op::Union, &notched}, {Op::Difference, &c}};
+  const auto fullWrong = oracle::SamplingJudge(s, c, full).check(wrong);
+  const auto stoppedWrong = oracle::SamplingJudge(s, c, stopping).check(wrong);
+  for (std::size_t i = 0; i < wrong.size(); ++i) {
+    EXPECT_FALSE(fullWrong[i].pass()) << i;
+    EXPECT_FALSE(stoppedWrong[i].pass()) << i;
+    EXPECT_LT(stoppedWrong[i].checked, fullWrong[i].checked) << i;
+  }
+}
+
 }  // namespace
 }  // namespace gh

@@ -47,6 +47,11 @@ struct SampleOptions {
   std::size_t uniformPoints = 2000;
   bool nearVertices = true;
   int constructionUlps = 1;  // as in ExactOptions
+  // Judge no more once every answer has a mismatch, and give an answer with one no points of its
+  // own beyond S and C's box: each verdict's pass() and firstMismatch are then the full check's,
+  // its counts those up to where it stopped. For callers that read pass() alone (the fuzz
+  // targets, where most of the naive and sweep variants' inputs have every answer wrong).
+  bool stopWhenAllFail = false;
 };
 
 struct SampleVerdict {
