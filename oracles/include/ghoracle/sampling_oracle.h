@@ -6,8 +6,9 @@
 // R in eight directions (from a phase fixed by the vertex and the seed, so a vertex shared by S
 // and R is sampled at the same points) plus both ways along the corner's bisector, at radii both
 // global (extent of S and C's box * 2^-8, 2^-14, 2^-20, 2^-26) and local (the vertex's shorter
-// edge times 2^-2, 2^-5, 2^-10, 2^-20), so that a small feature next to a large one, or a thin
-// spike, is sampled at its own size. Each point's sides of S, C and R are decided exactly:
+// edge times 2^-2, 2^-5, 2^-10, 2^-20; a corner's within a factor 2 of a smaller corner's at the
+// same vertex, that one's), so that a small feature next to a large one, or a thin spike, is
+// sampled at its own size. Each point's sides of S, C and R are decided exactly:
 // even-odd ray tests with an exact orientation, except that near a vertex, where the answer's
 // only edges are rays from the vertex, one ray test decides R's side for the points there and the
 // exact order of their directions among the rays the rest. Points that cannot change a verdict
