@@ -743,12 +743,13 @@ class RaysFrom {
 
 // The points around a vertex q, in a fixed order: eight directions from the vertex's phase and
 // both ways along each corner's bisector, at radii global (extent * 2^-8 .. 2^-26) and local (a
-// corner's shorter edge * 2^-2 .. 2^-20, a smaller corner's within a factor 2). `corners` holds the distinct corners (the neighbours
-// on a ring) of every ring of S, C and the answers through q: the vertex is visited once, with
-// one clearance and one fan, and each corner gets the radii it would get alone (below), the
-// union sampled once. (Visiting it once per corner cost 46 % more instructions on the clip
-// targets' corpus and found 3 naive answers fewer wrong; one local scale for all corners, the
-// shortest, lost 19 of 4,102 naive findings there.)
+// corner's shorter edge * 2^-2 .. 2^-20, or a smaller corner's within a factor 2 of it).
+// `corners` holds the distinct corners (the neighbours on a ring) of every ring of S, C and the
+// answers through q: the vertex is visited once, with one clearance and one fan, and each corner
+// gets the radii it would get alone at its (merged) scale (below), the union sampled once.
+// (Visiting it once per corner cost 46 % more instructions on the clip targets' corpus and found
+// 3 naive answers fewer wrong; one local scale for all corners, the shortest, lost 19 of 4,102
+// naive findings there.)
 //
 // visit(p, r) gets each point p and its radius r, and says whether p was judged (not skipped).
 // Points that add nothing are left out. clearanceBelow(cap), called once before the first visit,
