@@ -657,8 +657,8 @@ TEST(SamplingOracle, EachCornerThroughAVertexIsJudgedAtItsOwnScale) {
 }
 
 // The fuzz targets' judge stops once every answer has a mismatch (stopWhenAllFail): the answers'
-// verdicts and first mismatches stay the full check's, one found only near a vertex (the union
-// above) beside one found among the first uniform points included; and it does stop.
+// verdicts and first mismatches stay the full check's, one found only near a vertex (the notched
+// union below) beside one found among the first uniform points included; and it does stop.
 TEST(SamplingOracle, StoppingWhenEveryAnswerFailedKeepsEveryVerdict) {
   const Region s = io::readWkt("POLYGON((0 0,6 0,6 6,0 6,0 0))");
   const Region c = io::readWkt("POLYGON((3 1,9 1,9 7,3 7,3 1))");
