@@ -84,20 +84,25 @@ double evenOddArea(const Region& region) {
   requireFinite(region, "the region");
   // Scratch kept per thread: the invariant judges measure every answer of every fuzz execution,
   // and a dozen growing vectors per call cost more than the sweep on their small regions.
+  struct Extent {
+    double x0, x1, y0, y1;  // a segment's x-range and y-range, side by side for the pair scan
+  };
   struct Active {
     const Segment* segment;
     double y0, y1;  // its heights at the slab's boundaries (y0: computed as the last slab's y1)
+    double key;     // their sum, which orders the segments spanning the slab
   };
   struct Scratch {
     std::vector<Segment> segs;
+    std::vector<Extent> extents;
     std::vector<double> xs;
     std::vector<Active> active;
-    std::vector<std::pair<double, std::size_t>> spanning;  // (its boundary heights summed, place in active)
   };
   thread_local Scratch scratch;
   std::vector<Segment>& segs = scratch.segs;
+  std::vector<Extent>& extents = scratch.extents;
   std::vector<double>& xs = scratch.xs;
-  segs.clear(), xs.clear();
+  segs.clear(), extents.clear(), xs.clear();
   for (const Ring& ring : region) {
     for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
       Point a = ring[i], b = ring[(i + 1) % n];
@@ -109,17 +114,22 @@ double evenOddArea(const Region& region) {
   }
   std::sort(segs.begin(), segs.end(), [](const Segment& s, const Segment& t) { return s.a.x < t.a.x; });
   bool huge = false;  // a height whose double would overflow in a sum of two
-  for (const Segment& s : segs) huge = huge || std::max(std::abs(s.a.y), std::abs(s.b.y)) >= 0x1p1022;
+  for (const Segment& s : segs) {
+    huge = huge || std::max(std::abs(s.a.y), std::abs(s.b.y)) >= 0x1p1022;
+    extents.push_back({s.a.x, s.b.x, std::min(s.a.y, s.b.y), std::max(s.a.y, s.b.y)});
+  }
   // A proper crossing lies strictly inside both segments' x- and y-ranges (neither is vertical):
-  // pairs whose ranges only touch or miss are passed over before the four orientations.
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    const Segment& s = segs[i];
-    const double sy0 = std::min(s.a.y, s.b.y), sy1 = std::max(s.a.y, s.b.y);
-    for (std::size_t j = i + 1; j < segs.size() && segs[j].a.x < s.b.x; ++j) {
-      const Segment& t = segs[j];
-      if (std::max(t.a.y, t.b.y) <= sy0 || std::min(t.a.y, t.b.y) >= sy1) continue;
+  // pairs whose ranges only touch or miss are passed over before the four orientations, and so
+  // are segments with an end in common (a ring's consecutive edges), which meet only there or
+  // along a common stretch.
+  for (std::size_t i = 0; i < extents.size(); ++i) {
+    const Extent s = extents[i];
+    for (std::size_t j = i + 1; j < extents.size() && extents[j].x0 < s.x1; ++j) {
+      if (extents[j].y1 <= s.y0 || extents[j].y0 >= s.y1) continue;
+      const Segment &u = segs[i], &v = segs[j];
+      if (u.a == v.a || u.a == v.b || u.b == v.a || u.b == v.b) continue;
       double x;
-      if (properCrossingX(s, t, x)) xs.push_back(x);
+      if (properCrossingX(u, v, x)) xs.push_back(x);
     }
   }
   std::sort(xs.begin(), xs.end());
@@ -133,40 +143,47 @@ double evenOddArea(const Region& region) {
   // wide was measured as 0.) Halves are summed where a height is near the top of the range.
   // A segment's height at a boundary is computed once, at the slab it closes, and reused as the
   // next slab's left one (the same division: the same bits).
+  // The active segments stay in the last slab's order, which changes only where segments end,
+  // enter or cross at the boundary between: an insertion sort puts them in the new one in about
+  // one pass (std::sort on a fresh list was a fifth of the measurement). It is stable: segments
+  // with equal keys coincide across the slab, or nearly, their sums rounding alike, and keep their
+  // order; pairing them either way differs by that rounding at most.
   double area = 0;
   std::vector<Active>& active = scratch.active;
-  std::vector<std::pair<double, std::size_t>>& spanning = scratch.spanning;
   active.clear();
   std::size_t nextSeg = 0;
   for (std::size_t k = 0; k + 1 < xs.size(); ++k) {
     const double x0 = xs[k], x1 = xs[k + 1];
     active.erase(std::remove_if(active.begin(), active.end(), [x0](const Active& s) { return s.segment->b.x <= x0; }),
                  active.end());
-    // Entering segments go after the ones still active, in the order they were sorted in. (The
-    // sort below is not stable: segments with equal keys coincide across the slab, or nearly,
-    // their sums rounding alike, and pairing them either way differs by that rounding at most.)
     while (nextSeg < segs.size() && segs[nextSeg].a.x <= x0) {
       const Segment& s = segs[nextSeg++];
-      if (s.b.x > x0) active.push_back({&s, s.yAt(x0), 0});
+      if (s.b.x > x0) active.push_back({&s, s.yAt(x0), 0, 0});
     }
-    spanning.clear();
-    for (std::size_t i = 0; i < active.size(); ++i) {
-      active[i].y1 = active[i].segment->yAt(x1);
-      const double y0 = active[i].y0, y1 = active[i].y1;
-      spanning.emplace_back(huge ? y0 / 2 + y1 / 2 : y0 + y1, i);
+    for (Active& s : active) {
+      s.y1 = s.segment->yAt(x1);
+      s.key = huge ? s.y0 / 2 + s.y1 / 2 : s.y0 + s.y1;
     }
-    std::sort(spanning.begin(), spanning.end(), [](const auto& u, const auto& v) { return u.first < v.first; });
-    for (std::size_t i = 0; i + 1 < spanning.size(); i += 2) {
-      const Active& lo = active[spanning[i].second];
-      const Active& hi = active[spanning[i + 1].second];
+    for (std::size_t i = 1; i < active.size(); ++i) {
+      if (!(active[i].key < active[i - 1].key)) continue;
+      const Active moving = active[i];
+      std::size_t j = i;
+      do {
+        active[j] = active[j - 1];
+      } while (--j > 0 && moving.key < active[j - 1].key);
+      active[j] = moving;
+    }
+    for (std::size_t i = 0; i + 1 < active.size(); i += 2) {
+      const Active& lo = active[i];
+      const Active& hi = active[i + 1];
       const double h0 = hi.y0 - lo.y0, h1 = hi.y1 - lo.y1;
       area += (h0 + h1) / 2 * (x1 - x0);
     }
     for (Active& s : active) s.y0 = s.y1;
   }
   // A huge region's scratch is not kept for good (recycled.h's limit, as for the clip's spares).
-  const std::size_t bytes = segs.capacity() * sizeof(Segment) + xs.capacity() * sizeof(double) +
-                            active.capacity() * sizeof(Active) + spanning.capacity() * sizeof(spanning[0]);
+  const std::size_t bytes = segs.capacity() * sizeof(Segment) + extents.capacity() * sizeof(Extent) +
+                            xs.capacity() * sizeof(double) + active.capacity() * sizeof(Active);
   if (bytes > detail::kKeepBytes) scratch = Scratch();
   return area;
 }
