@@ -4,7 +4,6 @@
 #include <cmath>
 #include <memory>
 
-#include "operand.h"
 #include "point_hash.h"
 #include "recycled.h"
 #include "predicates/orientation.h"
@@ -134,13 +133,14 @@ bool anyVertexRepeats(const std::vector<Point>& points) {
 }
 
 // Distinct points numbered in order of first appearance (open addressing; equal points, -0.0 and
-// 0.0 included, get one number).
+// 0.0 included, get one number). reset() keeps the arrays' memory for the next answer.
 class PointNumbers {
  public:
-  explicit PointNumbers(std::size_t expected) {
+  void reset(std::size_t expected) {
     std::size_t capacity = 16;
     while (capacity < 2 * expected) capacity *= 2;
     slots_.assign(capacity, kEmpty);
+    points_.clear();
   }
   std::uint32_t number(Point p) {
     for (std::size_t i = PointHash()(p) & (slots_.size() - 1);; i = (i + 1) & (slots_.size() - 1)) {
@@ -154,6 +154,7 @@ class PointNumbers {
   }
   std::size_t size() const { return points_.size(); }
   Point point(std::uint32_t k) const { return points_[k]; }
+  std::size_t bytes() const { return slots_.capacity() * sizeof(std::uint32_t) + points_.capacity() * sizeof(Point); }
 
  private:
   static constexpr std::uint32_t kEmpty = 0xffffffffu;
@@ -165,15 +166,30 @@ class PointNumbers {
 struct Rows {
   std::vector<std::uint32_t> start, items;
   template <class ForEach>  // forEach(add) calls add(row, item) for every item, twice the same way
-  Rows(std::size_t rows, ForEach forEach) : start(rows + 1, 0) {
+  void fill(std::size_t rows, ForEach forEach) {
+    start.assign(rows + 1, 0);
     forEach([this](std::uint32_t row, std::uint32_t) { ++start[row + 1]; });
     for (std::size_t r = 0; r < rows; ++r) start[r + 1] += start[r];
     items.resize(start[rows]);
-    std::vector<std::uint32_t> at(start.begin(), start.end() - 1);
-    forEach([&](std::uint32_t row, std::uint32_t item) { items[at[row]++] = item; });
+    // start[r] serves as row r's write position, which ends at row r + 1's start: shifted back
+    // after.
+    forEach([&](std::uint32_t row, std::uint32_t item) { items[start[row]++] = item; });
+    for (std::size_t r = rows; r > 0; --r) start[r] = start[r - 1];
+    start[0] = 0;
   }
   const std::uint32_t* begin(std::uint32_t r) const { return items.data() + start[r]; }
   const std::uint32_t* end(std::uint32_t r) const { return items.data() + start[r + 1]; }
+  std::size_t bytes() const { return (start.capacity() + items.capacity()) * sizeof(std::uint32_t); }
+};
+
+// The edges of flat rings: edge e runs from points[e] to points[next[e]].
+struct FlatEdges {
+  const Point* points = nullptr;
+  const std::uint32_t* next = nullptr;
+  std::uint32_t count = 0;
+  std::uint32_t size() const { return count; }
+  Point from(std::uint32_t e) const { return points[e]; }
+  Point to(std::uint32_t e) const { return points[next[e]]; }
 };
 
 // A uniform grid over the edges' bounding boxes: each edge is listed in every cell its closed box
@@ -181,9 +197,12 @@ struct Rows {
 // follows the edges' mean extent, coarsened until no edge is listed in too many cells in all.
 class EdgeGrid {
  public:
-  explicit EdgeGrid(const Operand& op) {
+  EdgeGrid(const FlatEdges& op, Rows& rows) : rows_(rows) {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-    for (const Point& p : op.vertices) x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    for (std::uint32_t e = 0; e < op.size(); ++e) {
+      const Point p = op.from(e);
+      x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+    }
     x0_ = x0, y0_ = y0;
     const double n = static_cast<double>(std::max<std::size_t>(op.size(), 1));
     for (int side = static_cast<int>(std::min(2048.0, std::ceil(std::sqrt(n / 2)))); side >= 1; side /= 2) {
@@ -198,11 +217,11 @@ class EdgeGrid {
         const Point a = op.from(e), b = op.to(e);
         listed += (cellX(std::max(a.x, b.x)) - cellX(std::min(a.x, b.x)) + 1) *
                   std::size_t{cellY(std::max(a.y, b.y)) - cellY(std::min(a.y, b.y)) + 1};
-        if (listed > 16 * op.size()) break;
+        if (listed > 16 * std::size_t{op.size()}) break;
       }
-      if (listed <= 16 * op.size()) break;
+      if (listed <= 16 * std::size_t{op.size()}) break;
     }
-    rows_ = std::make_unique<Rows>(std::size_t{side_} * side_, [&](auto&& add) {
+    rows_.fill(std::size_t{side_} * side_, [&](auto&& add) {
       for (std::uint32_t e = 0; e < op.size(); ++e) {
         const Point a = op.from(e), b = op.to(e);
         for (std::uint32_t cy = cellY(std::min(a.y, b.y)); cy <= cellY(std::max(a.y, b.y)); ++cy) {
@@ -216,7 +235,7 @@ class EdgeGrid {
   // The edges listed in the cell of p.
   std::pair<const std::uint32_t*, const std::uint32_t*> near(Point p) const {
     const std::uint32_t c = cellY(p.y) * side_ + cellX(p.x);
-    return {rows_->begin(c), rows_->end(c)};
+    return {rows_.begin(c), rows_.end(c)};
   }
 
  private:
@@ -225,12 +244,47 @@ class EdgeGrid {
   std::uint32_t cellY(double y) const { return cell((y - y0_) / cellH_); }
   std::uint32_t cell(double t) const {
     if (!(t > 0)) return 0;  // also NaN: 0 / infinity
-    return static_cast<std::uint32_t>(std::min(std::floor(t), static_cast<double>(side_ - 1)));
+    // min(floor(t), side - 1) without a call to floor: below side - 1, t > 0 truncates to it.
+    return t < static_cast<double>(side_ - 1) ? static_cast<std::uint32_t>(t) : side_ - 1;
   }
   double x0_ = 0, y0_ = 0, cellW_ = 1, cellH_ = 1;
   std::uint32_t side_ = 1;
-  std::unique_ptr<Rows> rows_;
+  Rows& rows_;
 };
+
+// dissolveSeams' working arrays, kept per thread between answers: the exact arithmetic's answers
+// have seams to look for whenever a vertex repeats, and on the fuzz targets' small answers two
+// dozen fresh arrays a call cost more than the work (perf: allocation was a fifth of the pass).
+// Let go when larger than kKeepBytes, like the clip's other spares (recycled.h).
+struct SeamScratch {
+  struct Box {
+    double x0, x1, y0, y1;
+  };
+  std::vector<std::uint32_t> next, fromNumber, toNumber, pieceFrom, pieceTo, forwardOf, backwardOf, kept, left;
+  PointNumbers numbers;
+  Rows edgesAt, cells, around;
+  std::vector<Box> boxes;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> cuts;
+  std::vector<std::pair<Point, Point>> pieces;
+  std::vector<std::uint64_t> keys;
+  std::vector<int> count;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> byPair;
+  std::vector<char> dropped, used;
+
+  std::size_t bytes() const {
+    std::size_t b = numbers.bytes() + edgesAt.bytes() + cells.bytes() + around.bytes();
+    for (const auto* v : {&next, &fromNumber, &toNumber, &pieceFrom, &pieceTo, &forwardOf, &backwardOf, &kept, &left}) {
+      b += v->capacity() * sizeof(std::uint32_t);
+    }
+    b += boxes.capacity() * sizeof(Box) + cuts.capacity() * sizeof(cuts[0]) + pieces.capacity() * sizeof(pieces[0]);
+    b += keys.capacity() * sizeof(std::uint64_t) + count.capacity() * sizeof(int) + byPair.capacity() * sizeof(byPair[0]);
+    return b + dropped.capacity() + used.capacity();
+  }
+};
+
+// Up to this many edges every edge's box is screened against every point: cheaper than building
+// a grid for the few edges of most answers (the fuzz targets' answers have a few dozen).
+constexpr std::uint32_t kScreenAllEdgesUpTo = 64;
 
 // Zero-width seams: two rings of the answer running along the same segment in opposite
 // directions (the exact arithmetic's limit leaves them between regions that only touch, like two
@@ -238,45 +292,61 @@ class EdgeGrid {
 // endpoints, cancel opposite pairs, and chain what is left into rings again, so that the union of
 // two squares sharing an edge is one rectangle.
 void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
-  const Operand op(rings.points, rings.start);
+  thread_local SeamScratch scratch;
+  SeamScratch& s = scratch;
+  const auto edgeCount = static_cast<std::uint32_t>(rings.points.size());
+  s.next.resize(edgeCount);
+  for (std::size_t k = 0; k + 1 < rings.start.size(); ++k) {
+    for (std::uint32_t v = rings.start[k]; v < rings.start[k + 1]; ++v) s.next[v] = v + 1 < rings.start[k + 1] ? v + 1 : rings.start[k];
+  }
+  const FlatEdges op{rings.points.data(), s.next.data(), edgeCount};
   // The endpoints of every edge, numbered, and the edges at each.
-  PointNumbers numbers(op.size());
-  std::vector<std::uint32_t> fromNumber(op.size()), toNumber(op.size());
+  PointNumbers& numbers = s.numbers;
+  numbers.reset(op.size());
+  std::vector<std::uint32_t>&fromNumber = s.fromNumber, &toNumber = s.toNumber;
+  fromNumber.resize(op.size()), toNumber.resize(op.size());
   for (std::uint32_t e = 0; e < op.size(); ++e) fromNumber[e] = numbers.number(op.from(e));
   for (std::uint32_t e = 0; e < op.size(); ++e) toNumber[e] = numbers.number(op.to(e));
-  const Rows edgesAt(numbers.size(), [&](auto&& add) {
+  Rows& edgesAt = s.edgesAt;
+  edgesAt.fill(numbers.size(), [&](auto&& add) {
     for (std::uint32_t e = 0; e < op.size(); ++e) add(fromNumber[e], e), add(toNumber[e], e);
   });
   // Cut every edge e at each point x strictly inside it that is an endpoint of an edge f collinear
   // with e (a collinear overlap, split at the other's endpoints). A point collinear with e lies
   // strictly inside it iff it is in e's closed box and is neither end: the boxes, in one array,
-  // screen the edges of x's cell before any orientation is decided.
-  struct Box {
-    double x0, x1, y0, y1;
-  };
-  std::vector<Box> boxes(op.size());
+  // screen the edges (all of them, or those of x's grid cell) before any orientation is decided.
+  std::vector<SeamScratch::Box>& boxes = s.boxes;
+  boxes.resize(op.size());
   for (std::uint32_t e = 0; e < op.size(); ++e) {
     const Point a = op.from(e), b = op.to(e);
     boxes[e] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
   }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> cuts;  // (edge, number of a point cutting it)
-  const EdgeGrid grid(op);
-  for (std::uint32_t k = 0; k < numbers.size(); ++k) {
-    const Point x = numbers.point(k);
-    for (auto [it, end] = grid.near(x); it != end; ++it) {
-      const std::uint32_t e = *it;
-      const Box& box = boxes[e];
-      if (!((x.x >= box.x0) & (x.x <= box.x1) & (x.y >= box.y0) & (x.y <= box.y1))) continue;
-      if (fromNumber[e] == k || toNumber[e] == k) continue;  // an end of e
-      const Point a = op.from(e), b = op.to(e);
-      if (orientation(a, b, x, counters_) != Sign::Zero) continue;
-      for (const std::uint32_t* f = edgesAt.begin(k); f != edgesAt.end(k); ++f) {
-        const Point other = fromNumber[*f] == k ? op.to(*f) : op.from(*f);
-        if (orientation(a, b, other, counters_) == Sign::Zero) {
-          cuts.push_back({e, k});
-          break;
-        }
+  auto& cuts = s.cuts;  // (edge, number of a point cutting it)
+  cuts.clear();
+  auto tryCut = [&](std::uint32_t k, Point x, std::uint32_t e) {
+    const SeamScratch::Box& box = boxes[e];
+    if (!((x.x >= box.x0) & (x.x <= box.x1) & (x.y >= box.y0) & (x.y <= box.y1))) return;
+    if (fromNumber[e] == k || toNumber[e] == k) return;  // an end of e
+    const Point a = op.from(e), b = op.to(e);
+    if (orientation(a, b, x, counters_) != Sign::Zero) return;
+    for (const std::uint32_t* f = edgesAt.begin(k); f != edgesAt.end(k); ++f) {
+      const Point other = fromNumber[*f] == k ? op.to(*f) : op.from(*f);
+      if (orientation(a, b, other, counters_) == Sign::Zero) {
+        cuts.push_back({e, k});
+        return;
       }
+    }
+  };
+  if (op.size() <= kScreenAllEdgesUpTo) {
+    for (std::uint32_t k = 0; k < numbers.size(); ++k) {
+      const Point x = numbers.point(k);
+      for (std::uint32_t e = 0; e < op.size(); ++e) tryCut(k, x, e);
+    }
+  } else {
+    const EdgeGrid grid(op, s.cells);
+    for (std::uint32_t k = 0; k < numbers.size(); ++k) {
+      const Point x = numbers.point(k);
+      for (auto [it, end] = grid.near(x); it != end; ++it) tryCut(k, x, *it);
     }
   }
   // Directed pieces (each edge's cuts in order from its start), numbered by their ends' numbers
@@ -286,8 +356,9 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
     return u.first != v.first ? u.first < v.first : PointLess()(numbers.point(u.second), numbers.point(v.second));
   });
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());  // distinct numbers, distinct points
-  std::vector<std::pair<Point, Point>> pieces;
-  std::vector<std::uint32_t> pieceFrom, pieceTo;
+  auto& pieces = s.pieces;
+  std::vector<std::uint32_t>&pieceFrom = s.pieceFrom, &pieceTo = s.pieceTo;
+  pieces.clear(), pieceFrom.clear(), pieceTo.clear();
   pieces.reserve(op.size() + cuts.size()), pieceFrom.reserve(pieces.capacity()), pieceTo.reserve(pieces.capacity());
   auto addPiece = [&](Point from, std::uint32_t u, Point to, std::uint32_t v) {
     pieces.push_back({from, to}), pieceFrom.push_back(u), pieceTo.push_back(v);
@@ -308,23 +379,27 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
   }
   // Counts of directed pieces, keyed by (from, to) numbers: the distinct keys sorted, a count each.
   auto key = [](std::uint32_t u, std::uint32_t v) { return (std::uint64_t{u} << 32) | v; };
-  std::vector<std::uint64_t> keys(pieces.size());
+  std::vector<std::uint64_t>& keys = s.keys;
+  keys.resize(pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) keys[i] = key(pieceFrom[i], pieceTo[i]);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  std::vector<int> count(keys.size() + 1, 0);  // the last: for keys no piece has, never counted
+  std::vector<int>& count = s.count;
+  count.assign(keys.size() + 1, 0);  // the last: for keys no piece has, never counted
   auto countOf = [&](std::uint64_t k) {
     const auto it = std::lower_bound(keys.begin(), keys.end(), k);
     return it != keys.end() && *it == k ? static_cast<std::size_t>(it - keys.begin()) : keys.size();
   };
-  std::vector<std::uint32_t> forwardOf(pieces.size()), backwardOf(pieces.size());
+  std::vector<std::uint32_t>&forwardOf = s.forwardOf, &backwardOf = s.backwardOf;
+  forwardOf.resize(pieces.size()), backwardOf.resize(pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     forwardOf[i] = static_cast<std::uint32_t>(countOf(key(pieceFrom[i], pieceTo[i])));
     backwardOf[i] = static_cast<std::uint32_t>(countOf(key(pieceTo[i], pieceFrom[i])));
     ++count[forwardOf[i]];
   }
   count.back() = 0;
-  std::vector<std::uint32_t> kept;
+  std::vector<std::uint32_t>& kept = s.kept;
+  kept.clear();
   for (std::uint32_t i = 0; i < pieces.size(); ++i) {
     const std::uint32_t u = pieceFrom[i], v = pieceTo[i];
     int& forward = count[forwardOf[i]];
@@ -342,13 +417,15 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
   // regard to direction: every point still ends an even number of pieces, so every walk closes.
   bool directed = true;
   {
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> byPair(kept.size());
+    auto& byPair = s.byPair;
+    byPair.resize(kept.size());
     for (std::uint32_t j = 0; j < kept.size(); ++j) {
       const std::uint32_t u = pieceFrom[kept[j]], v = pieceTo[kept[j]];
       byPair[j] = {key(std::min(u, v), std::max(u, v)), j};
     }
     std::sort(byPair.begin(), byPair.end());
-    std::vector<char> dropped(kept.size(), 0);
+    std::vector<char>& dropped = s.dropped;
+    dropped.assign(kept.size(), 0);
     for (std::size_t a = 0, b; a < byPair.size(); a = b) {
       for (b = a + 1; b < byPair.size() && byPair[b].first == byPair[a].first; ++b) {
       }
@@ -356,7 +433,8 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
       for (std::size_t k = a + (b - a) % 2; k < b; ++k) dropped[byPair[k].second] = 1, directed = false;
     }
     if (!directed) {
-      std::vector<std::uint32_t> left;
+      std::vector<std::uint32_t>& left = s.left;
+      left.clear();
       for (std::uint32_t j = 0; j < kept.size(); ++j) {
         if (!dropped[j]) left.push_back(kept[j]);
       }
@@ -366,13 +444,15 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
   // Chain the remaining pieces; at a vertex with several ways on, take the sharpest right turn,
   // decided exactly. Any choice bounds the same even-odd interior; this one is deterministic
   // (counter-clockwise rings touching at a vertex become one ring through it).
-  const Rows around(numbers.size(), [&](auto&& add) {
+  Rows& around = s.around;
+  around.fill(numbers.size(), [&](auto&& add) {
     for (std::uint32_t j = 0; j < kept.size(); ++j) {
       add(pieceFrom[kept[j]], j);
       if (!directed) add(pieceTo[kept[j]], j);
     }
   });
-  std::vector<char> used(kept.size(), 0);
+  std::vector<char>& used = s.used;
+  used.assign(kept.size(), 0);
   out.points.clear(), out.start.assign(1, 0);
   out.points.reserve(kept.size());
   for (std::size_t start = 0; start < kept.size(); ++start) {
@@ -399,6 +479,7 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
     }
     out.closeRing();
   }
+  if (s.bytes() > kKeepBytes) s = SeamScratch();
 }
 
 }  // namespace

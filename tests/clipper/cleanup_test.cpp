@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -103,6 +104,29 @@ TEST(CleanUp, DissolvesASeamAlongALongSlopedEdge) {
   ASSERT_EQ(r.size(), 31u);  // one ring, and the squares
   EXPECT_EQ(r[0], (Ring{{0, 0}, {128, 0}, {128, -1}, {129, -1}, {129, 0}, {128, 0}, {128, 32}, {160, 40}, {32, 40}, {32, 8}}));
   EXPECT_TRUE(sameInterior(touching, r));
+}
+
+// The cut search screens every edge's box when the answer has few edges and goes through the
+// edge grid when it has many: the same overlap is cut either way, wherever its edge sits in the
+// flat rings. Here the last edge of all, x = 1 from y = 3 down to 0, holds the square [0,1]x[1,2]'s
+// edge strictly inside it: only cut at (1, 1) and (1, 2) does the seam between them cancel and
+// the two become one ring (uncut, spike removal cannot join them). The square at the corner
+// (2, 3) makes a vertex repeat, which is when seams are looked for.
+TEST(CleanUp, CutsAnOverlapAlikeWithAndWithoutTheEdgeGrid) {
+  for (const std::size_t squaresBefore : {0u, 1u, 20u}) {  // 12, 16 and 92 edges in all
+    Region touching;
+    for (std::size_t i = 0; i < squaresBefore; ++i) touching.push_back(rect(10.0 + 3 * i, 10, 11.0 + 3 * i, 11));
+    touching.push_back(rect(2, 3, 3, 4));
+    touching.push_back(rect(0, 1, 1, 2));
+    touching.push_back(rect(1, 0, 2, 3));
+    const Region r = clean(touching, true);
+    ASSERT_EQ(r.size(), squaresBefore + 1) << squaresBefore;  // the padding squares, and one ring
+    const Ring& joined = r.back();
+    for (const Point p : {Point{0, 1}, Point{2, 0}, Point{3, 4}}) {
+      EXPECT_NE(std::find(joined.begin(), joined.end(), p), joined.end()) << squaresBefore << ": (" << p.x << ", " << p.y << ")";
+    }
+    EXPECT_TRUE(sameInterior(touching, r));
+  }
 }
 
 // Seams are looked for only where the rings share a vertex (the cheap trigger): rings that touch
