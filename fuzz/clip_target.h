@@ -59,6 +59,9 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
     }
   }
   if (answers.empty()) return 0;
+#ifdef GHCLIP_FUZZ_UNJUDGED
+  return 0;  // the ceiling: what an execution costs before any judge (fuzz/CMakeLists.txt)
+#endif
   const JudgeHeap heap;  // the clips above ran outside it
   const oracle::InvariantJudge invariants(p.subject, p.clip);
   for (const auto& [op, r] : answers) {

@@ -38,6 +38,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       gh::fuzz::trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
     }
   }
+#ifdef GHCLIP_FUZZ_UNJUDGED
+  return 0;  // the ceiling: what an execution costs before the judge (fuzz/CMakeLists.txt)
+#endif
   std::vector<gh::oracle::ExactVerdict> verdicts;
   try {
     const gh::fuzz::JudgeHeap heap;
