@@ -14,6 +14,7 @@
 #include "filtered_orientation.h"
 #include "judging_scale.h"
 #include "mix_bits.h"
+#include "point_hash.h"
 #include "point_table.h"
 #include "pooled_vector.h"
 #include "ulp.h"
@@ -166,9 +167,12 @@ class EvenOddRegions {
     // Every edge (either way round, zero-length ones too), with the bit of its region; equal
     // segments merged: `toggle` the regions that hold it an odd number of times (crossing it
     // changes their parity), `present` every region that holds it.
+    // Equal segments are brought together by sorting on a hash of their coordinates first (equal
+    // segments, equal hashes: -0 hashed as 0), the coordinates deciding only between equal
+    // hashes: the order is no concern, as the bands are put in their own below.
     struct Raw {
       Point lo, hi;
-      std::uint64_t bit;
+      std::uint64_t bit, hash;
     };
     PooledVector<Raw> raw;
     for (std::size_t r = 0; r < regions.size() && r < kMost; ++r) {
@@ -176,7 +180,7 @@ class EvenOddRegions {
         for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
           Point a = ring[i], b = ring[(i + 1) % n];
           if (b.x < a.x || (b.x == a.x && b.y < a.y)) std::swap(a, b);
-          raw.push_back({a, b, std::uint64_t{1} << r});
+          raw.push_back({a, b, std::uint64_t{1} << r, mixBits(mixedPointHash(a) + mixedPointHash(b) * 0x9E3779B97F4A7C15ull)});
         }
       }
     }
@@ -185,6 +189,7 @@ class EvenOddRegions {
     // answer may hold anything.
     auto less = [](double u, double v) { return std::isnan(v) ? !std::isnan(u) : u < v; };
     auto before = [&](const Raw& u, const Raw& v) {
+      if (u.hash != v.hash) return u.hash < v.hash;
       const double uk[4] = {u.lo.x, u.lo.y, u.hi.x, u.hi.y}, vk[4] = {v.lo.x, v.lo.y, v.hi.x, v.hi.y};
       for (int i = 0; i < 4; ++i) {
         if (less(uk[i], vk[i])) return true;
@@ -218,18 +223,24 @@ class EvenOddRegions {
     // Each band holds copies of its edges (a ray test reads them in order, not scattered), twice:
     // from the rightmost right end leftwards (a ray to the right stops at the first edge wholly
     // left of its point, as every edge after it is) and from the leftmost left end rightwards.
-    rightward_.resize(start_[bands_]);
-    PooledVector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (const Edge& e : edges) {
-      for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) rightward_[fill[k]++] = e;
-    }
-    leftward_ = rightward_;
+    // The edges are put in each order once, by their indices, and dealt out to the bands in it:
+    // sorting every band's copies (of 64-byte edges) was a third of the constructor's time.
+    PooledVector<std::uint32_t> order(edges.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto deal = [&](PooledVector<Edge>& into) {
+      into.resize(start_[bands_]);
+      PooledVector<std::size_t> fill(start_.begin(), start_.end() - 1);
+      for (const std::uint32_t i : order) {
+        const Edge& e = edges[i];
+        for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) into[fill[k]++] = e;
+      }
+    };
+    std::sort(order.begin(), order.end(), [&](std::uint32_t e, std::uint32_t f) { return edges[e].maxX > edges[f].maxX; });
+    deal(rightward_);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t e, std::uint32_t f) { return edges[e].minX < edges[f].minX; });
+    deal(leftward_);
     middle_.assign(bands_, 0);
     for (std::size_t k = 0; k < bands_; ++k) {
-      std::sort(rightward_.begin() + start_[k], rightward_.begin() + start_[k + 1],
-                [](const Edge& e, const Edge& f) { return e.maxX > f.maxX; });
-      std::sort(leftward_.begin() + start_[k], leftward_.begin() + start_[k + 1],
-                [](const Edge& e, const Edge& f) { return e.minX < f.minX; });
       // The middle of the band's x-range (in halves: no overflow near 2^1023).
       if (start_[k + 1] > start_[k]) middle_[k] = leftward_[start_[k]].minX / 2 + rightward_[start_[k]].maxX / 2;
     }

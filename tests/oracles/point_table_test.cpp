@@ -70,6 +70,26 @@ TEST(PointTable, TheNextTableOnAThreadStartsEmpty) {
   }
 }
 
+// clear() empties the slots in use one by one (those it filled, and where growth moved them),
+// not the whole array: after it every point is new again, however the table grew before.
+TEST(PointTable, ClearEmptiesEverySlotUsedAcrossGrowth) {
+  PointTable<int> table;
+  for (int round = 0; round < 3; ++round) {
+    const int n = round == 1 ? 300 : 6000;  // grows past its first array, then within it
+    for (int i = 0; i < n; ++i) {
+      auto [value, fresh] = table.findOrAdd({i * 0.75, round - i * 0.5});
+      EXPECT_TRUE(fresh) << round << " " << i;
+      EXPECT_EQ(value, 0);
+      value = i + 1;
+    }
+    EXPECT_EQ(table.size(), static_cast<std::size_t>(n));
+    table.clear();
+    EXPECT_EQ(table.size(), 0u);
+    for (int i = 0; i < n; i += 7) EXPECT_TRUE(table.findOrAdd({i * 0.75, round - i * 0.5}).second) << round << " " << i;
+    table.clear();
+  }
+}
+
 // Slots are the hash's low bits, which a multiply-and-shift left alike for grid points: 9 of
 // 256 slots held the 9 x 9 integer grid.
 TEST(PointTable, HashSpreadsGridPointsOverTheSlots) {
