@@ -21,11 +21,15 @@
 namespace gh::fuzz {
 
 // The clip targets' problems: up to 3 rings of up to 16 vertices each.
-inline Pair clipPair(const std::uint8_t* data, std::size_t size) { return pair(data, size, 3, 16); }
-inline ProblemKey clipProblem(const std::uint8_t* data, std::size_t size) { return keyOf(clipPair(data, size)); }
+constexpr int kClipRings = 3, kClipVertices = 16;
+inline Pair clipPair(const std::uint8_t* data, std::size_t size) { return pair(data, size, kClipRings, kClipVertices); }
+inline ProblemKey clipProblem(const std::uint8_t* data, std::size_t size) {
+  return problemKey(data, size, kClipRings, kClipVertices);
+}
 
 inline int clipTarget(const char* target, Variant variant, const std::uint8_t* data, std::size_t size) {
   const Pair p = clipPair(data, size);
+  RecordedOperands operands(p.subject, p.clip);  // as its findings name them
   const bool strict = variant == Variant::Exact;
   oracle::SampleOptions so;
   so.uniformPoints = 200;
@@ -39,7 +43,7 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
   } catch (const ClipFailure& e) {  // phase 1 gave up: clip() fails so for every operation
     for (Op op : kAllOps) {
       if (strict) trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
-      record(target, std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op, data, size);
+      record(target, std::string("ClipFailure: ") + e.what(), operands, op, data, size);
     }
     return 0;
   }
@@ -49,7 +53,7 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
       answers.emplace_back(op, clipping->result(op));
     } catch (const ClipFailure& e) {
       if (strict) trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
-      record(target, std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op, data, size);
+      record(target, std::string("ClipFailure: ") + e.what(), operands, op, data, size);
       continue;
     }
     for (const Ring& ring : answers.back().second) {
@@ -68,7 +72,7 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
     const auto violations = invariants.violations(op, r);
     if (!violations.empty()) {
       if (strict) trap("invariant: " + violations.front(), p.subject, p.clip, op);
-      record(target, "invariant: " + violations.front(), p.subject, p.clip, op, data, size);
+      record(target, "invariant: " + violations.front(), operands, op, data, size);
     }
   }
   // The five answers at once: each at every point a check of it alone would judge, or at one in
@@ -79,7 +83,7 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
   for (std::size_t i = 0; i < answers.size(); ++i) {
     if (verdicts[i].pass()) continue;
     if (strict) trap("sampling oracle disagrees", p.subject, p.clip, answers[i].first);
-    record(target, "sampling oracle disagrees", p.subject, p.clip, answers[i].first, data, size);
+    record(target, "sampling oracle disagrees", operands, answers[i].first, data, size);
   }
   return 0;
 }

@@ -95,11 +95,31 @@ class FindingLog {
   std::abort();
 }
 
+// The operands of one execution as its findings name them: their WKT written once, when the first
+// finding asks for it. An execution records up to one finding per operation, and writing the WKT
+// for each was 3 % of fuzz_clip_naive's time (perf). Made and dropped within the execution (text
+// kept across executions would change their balance of allocations, which makes libFuzzer run an
+// input again to look for a leak).
+class RecordedOperands {
+ public:
+  RecordedOperands(const Region& subject, const Region& clip) : subject(subject), clip(clip) {}
+  const Region& subject;
+  const Region& clip;
+  // "WKT(subject)\tWKT(clip)"
+  const std::string& wkt() {
+    if (wkt_.empty()) wkt_ = io::writeWkt(subject) + '\t' + io::writeWkt(clip);
+    return wkt_;
+  }
+
+ private:
+  std::string wkt_;
+};
+
 // One line per finding to $GHCLIP_FUZZ_FINDINGS (if set): target, what, op, WKT, WKT, and the
 // name of the fuzz input, saved under $GHCLIP_FUZZ_FINDINGS_INPUTS (if set) for the first
 // findings of each cause and operation, so that they can be replayed by their target and join
 // the campaign's corpus. The cause is `what` up to a parenthesis (the figures after it vary).
-inline void record(const char* target, const std::string& what, const Region& s, const Region& c, Op op,
+inline void record(const char* target, const std::string& what, RecordedOperands& operands, Op op,
                    const std::uint8_t* data, std::size_t size) {
   FindingLog& log = FindingLog::instance();
   if (!log.enabled()) return;
@@ -114,8 +134,13 @@ inline void record(const char* target, const std::string& what, const Region& s,
       std::fclose(f);
     }
   }
-  log.add(std::string(target) + '\t' + what + '\t' + std::string(name(op)) + '\t' + io::writeWkt(s) + '\t' +
-          io::writeWkt(c) + '\t' + input + '\n');
+  log.add(std::string(target) + '\t' + what + '\t' + std::string(name(op)) + '\t' + operands.wkt() + '\t' + input +
+          '\n');
+}
+inline void record(const char* target, const std::string& what, const Region& s, const Region& c, Op op,
+                   const std::uint8_t* data, std::size_t size) {
+  RecordedOperands operands(s, c);
+  record(target, what, operands, op, data, size);
 }
 
 }  // namespace gh::fuzz

@@ -13,9 +13,12 @@
 namespace {
 
 // This target's problems: up to 2 rings of up to 8 vertices each (the exact oracle is costly).
-gh::fuzz::Pair oraclePair(const std::uint8_t* data, std::size_t size) { return gh::fuzz::pair(data, size, 2, 8); }
+constexpr int kOracleRings = 2, kOracleVertices = 8;
+gh::fuzz::Pair oraclePair(const std::uint8_t* data, std::size_t size) {
+  return gh::fuzz::pair(data, size, kOracleRings, kOracleVertices);
+}
 gh::fuzz::ProblemKey oracleProblem(const std::uint8_t* data, std::size_t size) {
-  return gh::fuzz::keyOf(oraclePair(data, size));
+  return gh::fuzz::problemKey(data, size, kOracleRings, kOracleVertices);
 }
 
 }  // namespace

@@ -16,8 +16,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
-#include <string>
+#include <cstring>
 #include <unordered_set>
 #include <vector>
 
@@ -25,28 +24,42 @@
 
 namespace gh::fuzz {
 
-// The bits of a decoded problem, in order: equal keys, the same problem (-0 and 0, or two NaNs
-// with different payloads, count as different: the clipper may see them differently).
+// A decoded problem's bits, in order, hashed as they come in (two 64-bit lanes): equal keys, the
+// same problem but for a chance of 2^-128 (-0 and 0, or two NaNs with different payloads, count
+// as different: the clipper may see them differently). The bits themselves were kept in a string
+// before, which grew by reallocation for every mutation the mutator decoded.
 class ProblemKey {
  public:
-  ProblemKey& add(std::int64_t v) { return bytes(&v, sizeof v); }
+  ProblemKey& add(std::int64_t v) { return word(static_cast<std::uint64_t>(v)); }
   ProblemKey& add(const Region& r) {
     add(static_cast<std::int64_t>(r.size()));
     for (const Ring& ring : r) {
       add(static_cast<std::int64_t>(ring.size()));
-      for (const Point& p : ring) bytes(&p.x, sizeof p.x), bytes(&p.y, sizeof p.y);
+      for (const Point& p : ring) word(bitsOf(p.x)), word(bitsOf(p.y));
     }
     return *this;
   }
-  bool operator==(const ProblemKey& o) const { return bits_ == o.bits_; }
-  std::size_t hash() const { return std::hash<std::string>()(bits_); }
+  bool operator==(const ProblemKey& o) const { return a_ == o.a_ && b_ == o.b_; }
+  std::size_t hash() const { return static_cast<std::size_t>(a_); }
 
  private:
-  ProblemKey& bytes(const void* p, std::size_t n) {
-    bits_.append(static_cast<const char*>(p), n);
+  static std::uint64_t bitsOf(double d) {
+    std::uint64_t u;
+    std::memcpy(&u, &d, sizeof u);
+    return u;
+  }
+  // splitmix64's finalizer: every input bit flips each output bit with probability about 1/2.
+  static std::uint64_t mix(std::uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  ProblemKey& word(std::uint64_t w) {
+    a_ = mix(a_ ^ w);
+    b_ = mix(b_ + w + 0x9E3779B97F4A7C15ull);
     return *this;
   }
-  std::string bits_;
+  std::uint64_t a_ = 0x243F6A8885A308D3ull, b_ = 0x13198A2E03707344ull;
 };
 
 // The problems judged so far, by the hashes of their keys (64 bits: a collision, which would

@@ -3,6 +3,7 @@
 // mutation back.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -133,6 +134,28 @@ TEST(ProblemKey, ABytePastWhatTheDecoderReadsDoesNotChangeTheProblem) {
   read[data.size() - 3] ^= 0x01;
   EXPECT_TRUE(keyOf(pair(unread.data(), unread.size(), 3, 16)) == parent);
   EXPECT_FALSE(keyOf(pair(read.data(), read.size(), 3, 16)) == parent);
+}
+
+// The mutator's keys decode into storage kept from call to call: a problem with fewer rings, or
+// shorter ones, than the last decoded must not keep any of its rings or points.
+TEST(ProblemKey, DecodedIntoKeptStorageItIsTheFreshDecodesKey) {
+  std::vector<std::vector<std::uint8_t>> inputs;
+  for (int k = 0; k < 40; ++k) {
+    std::vector<std::uint8_t> data(static_cast<std::size_t>(8 + 23 * k % 300));
+    for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<std::uint8_t>(i * 37 + 11 * k + 5);
+    inputs.push_back(data);
+  }
+  std::size_t distinctRingCounts = 0;
+  std::vector<std::size_t> seen;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (const auto& data : inputs) {
+      const Pair fresh = pair(data.data(), data.size(), 3, 16);
+      EXPECT_TRUE(problemKey(data.data(), data.size(), 3, 16) == keyOf(fresh)) << data.size();
+      const std::size_t rings = fresh.subject.size() * 4 + fresh.clip.size();
+      if (std::find(seen.begin(), seen.end(), rings) == seen.end()) seen.push_back(rings), ++distinctRingCounts;
+    }
+  }
+  EXPECT_GE(distinctRingCounts, 4u);  // the inputs decode to problems of several shapes
 }
 
 }  // namespace
