@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "ghclip/region.h"
+#include "ghoracle/mix_bits.h"
 
 namespace gh::fuzz {
 
@@ -48,15 +49,9 @@ class ProblemKey {
     std::memcpy(&u, &d, sizeof u);
     return u;
   }
-  // splitmix64's finalizer: every input bit flips each output bit with probability about 1/2.
-  static std::uint64_t mix(std::uint64_t z) {
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
   ProblemKey& word(std::uint64_t w) {
-    a_ = mix(a_ ^ w);
-    b_ = mix(b_ + w + 0x9E3779B97F4A7C15ull);
+    a_ = oracle::mixBits(a_ ^ w);
+    b_ = oracle::mixBits(b_ + w + 0x9E3779B97F4A7C15ull);
     return *this;
   }
   std::uint64_t a_ = 0x243F6A8885A308D3ull, b_ = 0x13198A2E03707344ull;

@@ -6,7 +6,7 @@
 #include <functional>
 
 #include "ghclip/region.h"
-#include "mix_bits.h"
+#include "ghoracle/mix_bits.h"
 
 namespace gh::oracle {
 

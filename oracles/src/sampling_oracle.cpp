@@ -13,7 +13,7 @@
 #include "ghoracle/exact_orientation.h"
 #include "filtered_orientation.h"
 #include "judging_scale.h"
-#include "mix_bits.h"
+#include "ghoracle/mix_bits.h"
 #include "point_hash.h"
 #include "point_table.h"
 #include "pooled_vector.h"

@@ -1,6 +1,7 @@
 // splitmix64's finalizer: every bit of the input moves every bit of the output. The judges'
 // hashes and sample phases derive from doubles' bit patterns, whose low bits are all zero for a
-// coordinate with a short significand, so their bits go through this before they are used.
+// coordinate with a short significand, so their bits go through this before they are used. The
+// fuzz targets' problem keys (fuzz/new_problem_mutator.h) hash with it too.
 #pragma once
 
 #include <cstdint>
