@@ -1,13 +1,18 @@
-// Checks fuzz/judge_heap.h as the fuzz build uses it (compiled with ASan by judge_heap_test.sh):
-// GMP blocks made inside a JudgeHeap are glibc's, those made outside stay ASan's, and every
-// block is resized and freed by its own heap whichever scope it crosses into. A block handed to
-// the wrong heap is a crash under ASan (or glibc's "free(): invalid pointer"), so the program
-// exiting 0 is part of the check. Prints one line per failed expectation and exits 1.
+// Checks fuzz/judge_heap.h and fuzz/judge_operator_new.cpp as the fuzz build uses them (compiled
+// with ASan by judge_heap_test.sh): GMP blocks and blocks of `new` made inside a JudgeHeap are
+// glibc's, those made outside stay ASan's, and every block is resized and freed by its own heap
+// whichever scope it crosses into. A block handed to the wrong heap is a crash under ASan (or
+// glibc's "free(): invalid pointer"), so the program exiting 0 is part of the check. Prints one
+// line per failed expectation and exits 1. With an argument it commits one memory error outside
+// any JudgeHeap (the script expects ASan, or the sized delete's own check, to stop it).
 #include <gmpxx.h>
 #include <sanitizer/allocator_interface.h>
 
 #include <cstdio>
+#include <cstring>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "judge_heap.h"
 
@@ -26,7 +31,45 @@ void expect(bool ok, const char* what) {
   }
 }
 
-bool onAsan(const mpz_class& z) { return __sanitizer_get_ownership(z.get_mpz_t()->_mp_d) != 0; }
+bool onAsan(const void* block) { return __sanitizer_get_ownership(block) != 0; }
+bool onAsan(const mpz_class& z) { return onAsan(z.get_mpz_t()->_mp_d); }
+
+struct Base {
+  long a = 1;
+};
+struct Derived : Base {  // no virtual destructor: deleting it as a Base deletes the wrong size
+  long b[4] = {2, 3, 4, 5};
+};
+
+// One memory error on blocks of `new` made outside any JudgeHeap (the clipper's). volatile: the
+// compiler may not see through to the error and drop it.
+int commit(const std::string& error) {
+  if (error == "heap-buffer-overflow") {
+    Derived* volatile block = new Derived;
+    volatile long* past = block->b;
+    past[4] = 1;  // one past the end
+    delete block;
+  } else if (error == "heap-use-after-free") {
+    int* volatile block = new int(7);
+    delete block;
+    return *block;
+  } else if (error == "alloc-dealloc-mismatch") {
+    int* volatile block = new int[1];  // one int: the sized delete's size is right, ASan sees new[]
+    delete block;
+  } else if (error == "new-delete-type-mismatch") {
+    Base* volatile block = new Derived;
+    delete block;  // the sized delete, given Base's size
+  } else if (error == "double-free") {
+    int* volatile block = new int(1);
+    delete block;
+    delete block;
+  } else {
+    std::fprintf(stderr, "unknown error %s\n", error.c_str());
+    return 3;
+  }
+  std::fprintf(stderr, "%s: not stopped\n", error.c_str());
+  return 0;
+}
 
 mpz_class big(unsigned long bits) {
   mpz_class z = 1;
@@ -36,7 +79,8 @@ mpz_class big(unsigned long bits) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc > 1) return commit(argv[1]);
   using gh::fuzz::JudgeHeap;
   // Made before any JudgeHeap installed the functions: GMP's default malloc, i.e. ASan's.
   auto early = std::make_unique<mpz_class>(big(4000));
@@ -68,6 +112,36 @@ int main() {
   judgedLarge.reset();
   mpz_class fresh = big(2000);
   expect(onAsan(fresh), "a number made after the scopes is on ASan's heap");
+
+  // Blocks of `new` (judge_operator_new.cpp): CGAL's arrangement and lazy numbers in the judge.
+  std::vector<std::unique_ptr<Derived>> judgedObjects, crossing;
+  std::vector<double> clipperVector(100, 1.0);  // the clipper's, outside every scope
+  expect(onAsan(clipperVector.data()), "a vector made outside a JudgeHeap is on ASan's heap");
+  {
+    const JudgeHeap heap;
+    for (int i = 0; i < 10; ++i) judgedObjects.push_back(std::make_unique<Derived>());
+    expect(!onAsan(judgedObjects.back().get()), "an object made by new inside a JudgeHeap is glibc's");
+    expect(!onAsan(judgedObjects.data()), "a vector's array grown inside a JudgeHeap is glibc's");
+    std::vector<char> large(1 << 20);  // above glibc's mmap threshold
+    expect(!onAsan(large.data()), "a large array made inside a JudgeHeap is glibc's");
+    clipperVector.resize(10000);  // an ASan array replaced inside a scope: the old one back to ASan
+    expect(!onAsan(clipperVector.data()), "a vector grown inside a JudgeHeap moves to glibc's heap");
+    crossing.push_back(std::make_unique<Derived>());  // a vector made outside, grown inside
+    expect(!onAsan(crossing.data()) && !onAsan(crossing.back().get()), "blocks made inside a JudgeHeap are glibc's");
+    std::string text(1000, 'x');  // through libstdc++'s own calls to operator new
+    expect(!onAsan(text.data()), "a string made inside a JudgeHeap is glibc's");
+    auto* array = new int[10];  // new[] is ASan's everywhere (it is not replaced)
+    expect(onAsan(array), "new[] inside a JudgeHeap stays ASan's");
+    delete[] array;
+  }
+  auto outside = std::make_unique<Derived>();
+  expect(onAsan(outside.get()), "an object made by new after the scopes is on ASan's heap");
+  Base* asBase = new Derived;
+  delete static_cast<Derived*>(asBase);  // the sized delete with the right size passes
+  judgedObjects.clear();  // glibc blocks deleted outside any scope (sized deletes)
+  crossing.clear();
+  clipperVector.clear();
+  clipperVector.shrink_to_fit();
   if (failures == 0) std::printf("judge heap: every expectation met\n");
   return failures == 0 ? 0 : 1;
 }
