@@ -57,21 +57,22 @@ class MappedBlocks {
  public:
   void insert(const void* block) {
     const Lock lock(busy_);
-    if (2 * (size_ + 1) > capacity_) grow();
+    if (2 * (filled_ + 1) > capacity_) rehash();
     std::size_t i = home(block);
     while (slots_[i] != kEmpty && slots_[i] != kGone) i = (i + 1) & (capacity_ - 1);
+    if (slots_[i] == kEmpty) ++filled_;
     slots_[i] = block;
-    ++size_;
+    size_.fetch_add(1, std::memory_order_relaxed);
   }
   // Whether the block is one of them; if so, it leaves the set.
   bool erase(const void* block) {
     if (size_.load(std::memory_order_relaxed) == 0) return false;  // the usual case: no lock
     const Lock lock(busy_);
-    if (capacity_ == 0) return false;
+    // Slots in use and emptied ones (kGone) fill at most half the array: a probe ends at kEmpty.
     for (std::size_t i = home(block); slots_[i] != kEmpty; i = (i + 1) & (capacity_ - 1)) {
       if (slots_[i] == block) {
         slots_[i] = kGone;
-        --size_;
+        size_.fetch_sub(1, std::memory_order_relaxed);
         return true;
       }
     }
@@ -94,27 +95,29 @@ class MappedBlocks {
     h = (h ^ (h >> 33)) * 0xff51afd7ed558ccdULL;
     return static_cast<std::size_t>(h ^ (h >> 33)) & (capacity_ - 1);
   }
-  void grow() {  // to twice the live entries' room (tombstones dropped)
+  // Into an array four times the live entries (at least 64 slots), the emptied ones dropped.
+  void rehash() {
     const void** old = slots_;
-    const std::size_t oldCapacity = capacity_;
+    const std::size_t oldCapacity = capacity_, live = size_.load(std::memory_order_relaxed);
     capacity_ = 64;
-    while (capacity_ < 4 * (size_ + 1)) capacity_ *= 2;
+    while (capacity_ < 4 * (live + 1)) capacity_ *= 2;
     slots_ = static_cast<const void**>(__libc_calloc(capacity_, sizeof(const void*)));
     if (!slots_) std::abort();
-    size_ = 0;
+    filled_ = 0;
     for (std::size_t j = 0; j < oldCapacity; ++j) {
       if (old[j] == kEmpty || old[j] == kGone) continue;
       std::size_t i = home(old[j]);
       while (slots_[i] != kEmpty) i = (i + 1) & (capacity_ - 1);
       slots_[i] = old[j];
-      ++size_;
+      ++filled_;
     }
     __libc_free(old);
   }
   std::atomic_flag busy_ = ATOMIC_FLAG_INIT;
   const void** slots_ = nullptr;
   std::size_t capacity_ = 0;
-  std::atomic<std::size_t> size_{0};
+  std::size_t filled_ = 0;           // slots not kEmpty: in use or emptied
+  std::atomic<std::size_t> size_{0};  // slots in use
 };
 
 inline MappedBlocks mappedBlocks;
@@ -124,16 +127,16 @@ inline MappedBlocks mappedBlocks;
 // break as last read (sbrk(0) is a system call here: 1 % of fuzz_clip_exact_oracle's time when
 // read for every block) is at most today's, as glibc is told never to give memory back by
 // lowering it (JudgeHeap); it is read again only for a new block beyond it.
-inline std::uintptr_t breakSeen = 0;
+inline std::atomic<std::uintptr_t> breakSeen{0};
 inline bool inBreakRange(const void* block) {
   const auto at = reinterpret_cast<std::uintptr_t>(block);
-  return at >= breakAtInstall && at < breakSeen;
+  return at >= breakAtInstall && at < breakSeen.load(std::memory_order_relaxed);
 }
 
 // A block from glibc, its address noted when it lies outside the break range.
 inline void* fromGlibc(void* block) {
   if (block && !inBreakRange(block)) {
-    breakSeen = reinterpret_cast<std::uintptr_t>(sbrk(0));
+    breakSeen.store(reinterpret_cast<std::uintptr_t>(sbrk(0)), std::memory_order_relaxed);
     if (!inBreakRange(block)) mappedBlocks.insert(block);
   }
   return block;
@@ -174,7 +177,8 @@ class JudgeHeap {
   JudgeHeap() {
     // Blocks GMP made before this ran came from ASan's malloc; release() returns them there.
     static const bool installed = [] {
-      judge_heap::breakAtInstall = judge_heap::breakSeen = reinterpret_cast<std::uintptr_t>(sbrk(0));
+      judge_heap::breakAtInstall = reinterpret_cast<std::uintptr_t>(sbrk(0));
+      judge_heap::breakSeen.store(judge_heap::breakAtInstall, std::memory_order_relaxed);
       // The break never comes down (inBreakRange): no trimming of the top of glibc's heap.
       __libc_mallopt(M_TRIM_THRESHOLD, -1);
       mp_set_memory_functions(judge_heap::allocate, judge_heap::reallocate, judge_heap::release);

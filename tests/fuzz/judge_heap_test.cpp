@@ -8,6 +8,7 @@
 #include <gmpxx.h>
 #include <sanitizer/allocator_interface.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -142,6 +143,34 @@ int main(int argc, char** argv) {
   crossing.clear();
   clipperVector.clear();
   clipperVector.shrink_to_fit();
+  // Large glibc blocks (mapped, noted in a set) made and freed many times over, with ASan blocks
+  // freed in between (each a look-up of a block not in the set, which must end).
+  {
+    std::vector<std::vector<char>> large;
+    large.reserve(64);
+    for (int i = 0; i < 3000; ++i) {
+      {
+        const JudgeHeap heap;
+        large.emplace_back(200000 + 16 * (i % 97));
+        expect(!onAsan(large.back().data()), "a large block made inside a JudgeHeap is glibc's");
+      }
+      if (large.size() == 64) large.erase(large.begin(), large.begin() + 32);
+      expect(onAsan(std::make_unique<Derived>().get()), "an object made outside every scope is ASan's");
+    }
+  }
+  // The set itself, over many distinct addresses (never dereferenced) with few in it at once:
+  // its emptied slots must not use up the array, or a look-up of an address not in it never ends.
+  {
+    gh::fuzz::judge_heap::MappedBlocks set;
+    auto address = [](std::uintptr_t k) { return reinterpret_cast<const void*>((k + 1) << 12); };
+    bool all = true;
+    for (std::uintptr_t k = 0; k < 100000; ++k) {
+      set.insert(address(k));
+      if (k >= 8) all &= set.erase(address(k - 8));
+      all &= !set.erase(address(k + 1000000));
+    }
+    expect(all, "the set of mapped blocks finds what it holds and not what it does not");
+  }
   if (failures == 0) std::printf("judge heap: every expectation met\n");
   return failures == 0 ? 0 : 1;
 }
