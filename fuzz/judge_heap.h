@@ -149,8 +149,21 @@ inline void* fromGlibc(void* block) {
 // which sent a double free to glibc; it also scans ASan's list of large blocks to say no.)
 inline bool releasedByGlibc(void* block) { return inBreakRange(block) || mappedBlocks.erase(block); }
 
+// A block from the heap of the scope: glibc's inside a JudgeHeap, else ASan's. Null when out of
+// memory (GMP aborts, operator new tries its new_handler).
+inline void* tryAllocate(std::size_t size) { return depth > 0 ? fromGlibc(__libc_malloc(size)) : std::malloc(size); }
+
+// Hands a block to the heap that owns it.
+inline void freeBlock(void* block) {
+  if (releasedByGlibc(block)) {
+    __libc_free(block);
+  } else {
+    std::free(block);  // ASan's, or a double free or wild pointer for ASan to report
+  }
+}
+
 inline void* allocate(std::size_t size) {
-  void* block = depth > 0 ? fromGlibc(__libc_malloc(size)) : std::malloc(size);
+  void* block = tryAllocate(size);
   if (!block) std::abort();  // GMP's own functions abort too when memory runs out
   return block;
 }
@@ -162,13 +175,7 @@ inline void* reallocate(void* block, std::size_t, std::size_t size) {
   return moved;
 }
 
-inline void release(void* block, std::size_t) {
-  if (releasedByGlibc(block)) {
-    __libc_free(block);
-  } else {
-    std::free(block);
-  }
-}
+inline void release(void* block, std::size_t) { freeBlock(block); }
 
 }  // namespace judge_heap
 

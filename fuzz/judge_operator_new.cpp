@@ -28,43 +28,32 @@
 
 namespace {
 
+using gh::fuzz::judge_heap::freeBlock;
+
 void* allocate(std::size_t size) {
   if (size == 0) size = 1;  // distinct pointers for empty objects
   for (;;) {
-    void* block = gh::fuzz::judge_heap::depth > 0 ? gh::fuzz::judge_heap::fromGlibc(__libc_malloc(size)) : std::malloc(size);
-    if (block) return block;
+    if (void* block = gh::fuzz::judge_heap::tryAllocate(size)) return block;
     const std::new_handler handler = std::get_new_handler();
     if (!handler) return nullptr;
     handler();
   }
 }
 
-void release(void* block) {
-  if (!block) return;
-  if (gh::fuzz::judge_heap::releasedByGlibc(block)) {
-    __libc_free(block);
-  } else {
-    std::free(block);  // ASan's, or a double free or wild pointer for ASan to report
-  }
-}
-
 // ASan's sized delete checks that the size is the one the block was made with (the delete of a
 // base class without a virtual destructor); so does this one, for ASan's blocks (the clipper's).
-void releaseSized(void* block, std::size_t size) {
-  if (!block) return;
-  if (gh::fuzz::judge_heap::releasedByGlibc(block)) {
-    __libc_free(block);
-    return;
+void freeSized(void* block, std::size_t size) {
+  if (!gh::fuzz::judge_heap::inBreakRange(block) && __sanitizer_get_ownership(block)) {
+    const std::size_t made = __sanitizer_get_allocated_size(block);
+    if (made != (size == 0 ? 1 : size)) {  // allocate() made an empty object 1 byte
+      std::fprintf(stderr,
+                   "ERROR: new-delete-type-mismatch (fuzz/judge_operator_new.cpp): a block of %zu bytes deleted as %zu "
+                   "bytes\n",
+                   made, size);
+      std::abort();
+    }
   }
-  const std::size_t made = __sanitizer_get_ownership(block) ? __sanitizer_get_allocated_size(block) : 0;
-  if (made != 0 && made != (size == 0 ? 1 : size)) {  // allocate() made an empty object 1 byte
-    std::fprintf(stderr,
-                 "ERROR: new-delete-type-mismatch (fuzz/judge_operator_new.cpp): a block of %zu bytes deleted as %zu "
-                 "bytes\n",
-                 made, size);
-    std::abort();
-  }
-  std::free(block);  // ASan's, or a double free or wild pointer for ASan to report
+  freeBlock(block);
 }
 
 }  // namespace
@@ -81,8 +70,14 @@ void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
     return nullptr;
   }
 }
-void operator delete(void* block) noexcept { release(block); }
-void operator delete(void* block, const std::nothrow_t&) noexcept { release(block); }
-void operator delete(void* block, std::size_t size) noexcept { releaseSized(block, size); }
+void operator delete(void* block) noexcept {
+  if (block) freeBlock(block);
+}
+void operator delete(void* block, const std::nothrow_t&) noexcept {
+  if (block) freeBlock(block);
+}
+void operator delete(void* block, std::size_t size) noexcept {
+  if (block) freeSized(block, size);
+}
 
 #endif
