@@ -25,6 +25,7 @@
 #include "ghclip/errors.h"
 #include "ghclip/validate.h"
 #include "difference_bound.h"
+#include "filtered_orientation.h"
 #include "judging_scale.h"
 #include "point_hash.h"
 #include "rational_orientation.h"
@@ -43,18 +44,24 @@ using SegmentTraits = RobustSegmentTraits<Kernel>;
 // along it (bit j: answer j, for the several answers judged in one arrangement), and the signed
 // number of rounding zone edges (+1 when the zone lies to the left of the piece directed left to
 // right, -1 when to its right).
+// Beside the counts, the segment of doubles the piece was cut from (its line: lineA != lineB), so
+// that which pieces lie on one line is decided on doubles (OperandLines), not on the pieces'
+// ends, crossings in the kernel's rationals. Not part of the data's equality.
 struct Counts {
   int s = 0, c = 0;
   unsigned r = 0;
   int z = 0;
+  Point lineA{}, lineB{};
   bool operator==(const Counts& o) const { return s == o.s && c == o.c && r == o.r && z == o.z; }
   unsigned parityBits() const { return (s & 1u) | (c & 1u) << 1 | r << 2; }
   bool onOperands() const { return s + c > 0; }
+  bool hasLine() const { return lineA != lineB; }
 };
-// Overlapping segments add up their counts (and their parities).
+// Overlapping segments add up their counts (and their parities); they lie on one line, either's.
 struct AddCounts {
   Counts operator()(const Counts& a, const Counts& b) const {
-    return {a.s + b.s, a.c + b.c, a.r ^ b.r, a.z + b.z};
+    const Counts& line = a.hasLine() ? a : b;
+    return {a.s + b.s, a.c + b.c, a.r ^ b.r, a.z + b.z, line.lineA, line.lineB};
   }
 };
 
@@ -109,6 +116,7 @@ std::vector<Traits::Curve_2> mergedCurves(std::vector<CountedSegment> segments) 
       counts = AddCounts()(counts, segments[next].counts);
     }
     const Point a = segments[i].a, b = segments[i].b;
+    counts.lineA = a, counts.lineB = b;
     curves.emplace_back(SegmentTraits::Curve_2(KPoint(a.x, a.y), KPoint(b.x, b.y)), counts);
     i = next;
   }
@@ -402,12 +410,24 @@ class OperandLines {
     operandVertex_.emplace(&*v, result);
     return result;
   }
+  // Does out, leaving h's target, go on along h's line beyond it? Two pieces that meet lie on
+  // one line iff the segments of doubles they were cut from do (exact orientations of doubles);
+  // then out goes on, not back along h, iff both run the same way in lexicographic order.
+  // Pieces without their segment (none in the arrangement of S, C and the answers) are decided
+  // on their ends, in the kernel's rationals.
+  static bool continues(Halfedge h, Halfedge out) {
+    const Counts &a = h->curve().data(), &b = out->curve().data();
+    if (a.hasLine() && b.hasLine()) {
+      return filteredOrientation(a.lineA, a.lineB, b.lineA) == 0 && filteredOrientation(a.lineA, a.lineB, b.lineB) == 0 &&
+             h->direction() == out->direction();
+    }
+    const KPoint &p = h->source()->point(), &v = h->target()->point(), &q = out->target()->point();
+    // (The second predicate's precondition: the three points are collinear.)
+    return Kernel().collinear_2_object()(p, v, q) && Kernel().collinear_are_strictly_ordered_along_line_2_object()(p, v, q);
+  }
   // From h's target on: every boundary edge that continues h's line, collecting the operand
   // vertices passed.
   void follow(Halfedge h, std::vector<Vertex>& run, std::unordered_set<const void*>& done) {
-    const auto collinear = Kernel().collinear_2_object();
-    // (Its precondition: the three points are collinear.)
-    const auto strictlyOrdered = Kernel().collinear_are_strictly_ordered_along_line_2_object();
     for (;;) {
       const Vertex v = h->target();
       if (isOperandVertex(v)) run.push_back(v);
@@ -416,11 +436,7 @@ class OperandLines {
       std::optional<Halfedge> next;
       do {
         const Halfedge out = around->twin();  // leaves v
-        if (around != h && onOperands(out) && !done.count(&*out) &&
-            collinear(h->source()->point(), v->point(), out->target()->point()) &&
-            strictlyOrdered(h->source()->point(), v->point(), out->target()->point())) {
-          next = out;
-        }
+        if (around != h && onOperands(out) && !done.count(&*out) && continues(h, out)) next = out;
       } while (++around != first);
       if (!next) return;
       h = *next;
