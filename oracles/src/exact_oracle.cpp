@@ -746,6 +746,11 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
       }
       return true;
     };
+    // Whether a wrong face lies in some zone, asked once: the answers share most of their wrong
+    // faces. The same for every answer it is wrong for, as a zone that holds the face lies near
+    // it, so among the zones near that answer's wrong faces (runsNear: the zone lies within its
+    // run's box widened as there).
+    std::unordered_map<const void*, bool> inSomeZone;
     bool anyZone = false;
     std::vector<char> excused(judged.size(), 0), zoneNeeded(near.size(), 0);
     for (std::size_t j = 0; j < judged.size(); ++j) {
@@ -756,9 +761,11 @@ std::vector<ExactVerdict> judge(const Region& subject, const Region& clip, const
       judged[j].v.zones = zones;
       if (zones == 0) continue;
       excused[j] = std::all_of(judged[j].wrongFaces.begin(), judged[j].wrongFaces.end(), [&](Face f) {
+        const auto [known, fresh] = inSomeZone.try_emplace(&*f, false);
+        if (!fresh) return known->second;
         const Outline o = outlineOf(f);
         for (std::size_t i = 0; i < nearJ.size(); ++i) {
-          if (nearJ[i] && zone[i] && inZone(o, i)) return true;
+          if (nearJ[i] && zone[i] && inZone(o, i)) return known->second = true;
         }
         return false;
       });
