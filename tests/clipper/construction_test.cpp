@@ -120,6 +120,49 @@ TEST(Construction, CertifiedPathDecidesRandomCrossingsAtEveryScale) {
   }
 }
 
+// Is d the double nearest to v (either of two equally near)?
+bool nearest(double d, const mpq_class& v) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const mpq_class error = abs(v - q(d));
+  return error <= abs(v - q(std::nextafter(d, -inf))) && error <= abs(v - q(std::nextafter(d, inf)));
+}
+
+// Where the doubles cannot certify a coordinate, the rationals decide and round to the nearest
+// double. A crossing on the axis x = 0 always goes there (0 has no certificate: the exact value
+// might be a tiny non-zero one), at every magnitude of the other coordinate, its lifting of values
+// below 2^-1000 included; so a fallback that kept a wrong neighbour, or a faithful but not
+// nearest one, fails here where the faithfulness properties above would not see it.
+TEST(Construction, RationalFallbackRoundsToTheNearestDouble) {
+  std::mt19937_64 rng(20261129);
+  auto magnitude = [&rng](int lo, int hi) {
+    const double m = static_cast<double>(rng() >> 11) + 1;  // 53 random bits, never 0
+    return std::ldexp(m, lo + static_cast<int>(rng() % static_cast<std::uint64_t>(hi - lo + 1)) - 53);
+  };
+  int fallbacks = 0;
+  for (int i = 0; i < 3000; ++i) {
+    // q from the left half-plane to the right one; p along x = 0, long enough to meet it.
+    const int e = -1070 + static_cast<int>(rng() % 2000);  // the scale of q's heights
+    const Point q1{-magnitude(-40, 40), magnitude(e, e + 20) * (rng() % 2 ? 1 : -1)},
+        q2{magnitude(-40, 40), magnitude(e, e + 20) * (rng() % 2 ? 1 : -1)};
+    const double reach = 2 * std::max(std::abs(q1.y), std::abs(q2.y)) + 1;
+    const Point p1{0, -reach}, p2{0, reach};
+    if (!properlyCross(p1, p2, q1, q2)) continue;
+    const mpq_class t = q(q1.x) / (q(q1.x) - q(q2.x));  // q's parameter at x = 0
+    const mpq_class y = q(q1.y) + t * (q(q2.y) - q(q1.y));
+    for (const bool fma : {true, false}) {
+      const std::uint64_t before = counters().exactConstructions;
+      const Point c = fma ? constructCrossing(p1, p2, q1, q2)
+                          : detail::constructCrossingWithoutFmaInstruction(p1, p2, q1, q2, counters());
+      ASSERT_EQ(counters().exactConstructions - before, 1u) << "the crossing on x = 0 was certified in doubles";
+      EXPECT_EQ(c.x, 0.0);
+      ASSERT_TRUE(nearest(c.y, y)) << "y " << c.y << " is not the nearest double, for q " << q1.x << " " << q1.y
+                                   << " to " << q2.x << " " << q2.y;
+    }
+    ++fallbacks;
+  }
+  EXPECT_GT(fallbacks, 2500);
+}
+
 TEST(Construction, SubnormalCrossingIsExact) {
   const double u = std::numeric_limits<double>::denorm_min();
   // (4u, 2u)-(12u, 4u) crosses x = 8u at y = 3u exactly.

@@ -1,6 +1,6 @@
 #include "predicates/construction.h"
 
-#include <gmpxx.h>
+#include <gmp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -56,40 +56,96 @@ bool certify(TwoTerm v, double bound, double& out) {
   return true;
 }
 
-// The double nearest to v. mpq_class::get_d truncates and gives up below the normal range, so
-// tiny values are lifted by an exact power of two first; the truncated result is then within one
-// ulp, and the nearest of it and its two neighbours is chosen exactly.
-double nearestDouble(const mpq_class& v) {
-  constexpr int kLift = 1100;
-  double d;
-  if (abs(v) < mpq_class(0x1p-1000)) {
-    mpq_class lifted;
-    mpq_mul_2exp(lifted.get_mpq_t(), v.get_mpq_t(), kLift);
-    d = std::ldexp(lifted.get_d(), -kLift);
-  } else {
-    d = v.get_d();
+// The rationals of an exact construction, kept for the thread, as the integer stage keeps its
+// integers: each fallback made and freed about 90 GMP blocks through temporaries of mpq_class, a
+// third of the exact clip's allocations on the fuzz corpus (where a crossing on an axis, at 0, or
+// at an extreme magnitude cannot be certified in doubles), and under ASan each block costs more
+// than the arithmetic. The same operations on the same values: the same exact results.
+class Rationals {
+ public:
+  Rationals() {
+    for (mpq_t* r : r_) mpq_init(*r);
+    mpq_set_d(liftBelow_, 0x1p-1000);
   }
-  double best = d, below, above;
-  mpq_class bestError = abs(v - mpq_class(d));
-  neighbours(d, below, above);
-  for (double c : {below, above}) {
-    if (!std::isfinite(c)) continue;
-    const mpq_class error = abs(v - mpq_class(c));
-    if (error < bestError) best = c, bestError = error;
+  ~Rationals() {
+    for (mpq_t* r : r_) mpq_clear(*r);
   }
-  return best;
-}
+  Rationals(const Rationals&) = delete;
+  Rationals& operator=(const Rationals&) = delete;
+
+  // out = u - v for doubles (converted exactly).
+  void difference(mpq_t out, double u, double v) {
+    mpq_set_d(out, u);
+    mpq_set_d(a_, v);
+    mpq_sub(out, out, a_);
+  }
+  // out = ax * by - ay * bx for rationals ax, ay and differences of doubles by = b1 - b2, bx.
+  void cross(mpq_t out, const mpq_t ax, const mpq_t ay, double by1, double by2, double bx1, double bx2) {
+    difference(b_, by1, by2);
+    mpq_mul(b_, ax, b_);
+    difference(c_, bx1, bx2);
+    mpq_mul(c_, ay, c_);
+    mpq_sub(out, b_, c_);
+  }
+  // from + parameter (to - from), exactly.
+  void along(mpq_t out, const mpq_t parameter, double from, double to) {
+    difference(b_, to, from);
+    mpq_mul(b_, parameter, b_);
+    mpq_set_d(c_, from);
+    mpq_add(out, c_, b_);
+  }
+
+  // The double nearest to v. mpq_get_d truncates and gives up below the normal range, so tiny
+  // values are lifted by an exact power of two first; the truncated result is then within one
+  // ulp, and the nearest of it and its two neighbours is chosen exactly (a tie keeps it).
+  double nearest(const mpq_t v) {
+    constexpr int kLift = 1100;
+    double d;
+    mpq_abs(a_, v);
+    if (mpq_cmp(a_, liftBelow_) < 0) {
+      mpq_mul_2exp(a_, v, kLift);
+      d = std::ldexp(mpq_get_d(a_), -kLift);
+    } else {
+      d = mpq_get_d(v);
+    }
+    double best = d, below, above;
+    distance(bestError_, v, d);
+    neighbours(d, below, above);
+    for (double c : {below, above}) {
+      if (!std::isfinite(c)) continue;
+      distance(b_, v, c);
+      if (mpq_cmp(b_, bestError_) < 0) best = c, mpq_swap(bestError_, b_);
+    }
+    return best;
+  }
+
+  mpq_t qx, qy, w1, w2, t, x, y;  // exactCrossing's named values
+
+ private:
+  // out = |v - c|.
+  void distance(mpq_t out, const mpq_t v, double c) {
+    mpq_set_d(out, c);
+    mpq_sub(out, v, out);
+    mpq_abs(out, out);
+  }
+  mpq_t a_, b_, c_, bestError_, liftBelow_;  // scratch, and the bound below which to lift
+  // Every number above, for construction and destruction.
+  mpq_t* const r_[12] = {&qx, &qy, &w1, &w2, &t, &x, &y, &a_, &b_, &c_, &bestError_, &liftBelow_};
+};
 
 Point exactCrossing(Point p1, Point p2, Point q1, Point q2, ExactCounters& counters) {
   ++counters.exactConstructions;
+  thread_local Rationals r;
   // t = O(q1, q2, p1) / (O(q1, q2, p1) - O(q1, q2, p2)) along p1p2; doubles convert exactly.
-  const mpq_class qx = mpq_class(q2.x) - q1.x, qy = mpq_class(q2.y) - q1.y;
-  const mpq_class w1 = qx * (mpq_class(p1.y) - q1.y) - qy * (mpq_class(p1.x) - q1.x);
-  const mpq_class w2 = qx * (mpq_class(p2.y) - q1.y) - qy * (mpq_class(p2.x) - q1.x);
-  const mpq_class t = w1 / (w1 - w2);
-  const mpq_class x = mpq_class(p1.x) + t * (mpq_class(p2.x) - p1.x);
-  const mpq_class y = mpq_class(p1.y) + t * (mpq_class(p2.y) - p1.y);
-  return {nearestDouble(x), nearestDouble(y)};
+  r.difference(r.qx, q2.x, q1.x);
+  r.difference(r.qy, q2.y, q1.y);
+  r.cross(r.w1, r.qx, r.qy, p1.y, q1.y, p1.x, q1.x);  // qx (p1.y - q1.y) - qy (p1.x - q1.x)
+  r.cross(r.w2, r.qx, r.qy, p2.y, q1.y, p2.x, q1.x);
+  mpq_sub(r.t, r.w1, r.w2);
+  mpq_div(r.t, r.w1, r.t);
+  r.along(r.x, r.t, p1.x, p2.x);
+  r.along(r.y, r.t, p1.y, p2.y);
+  return {r.nearest(r.x), r.nearest(r.y)};
 }
 
 // A determinant L - R of two products of exact differences, as s + lo, and |L| + |R| rounded.
