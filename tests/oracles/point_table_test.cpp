@@ -44,7 +44,9 @@ TEST(PointTable, MinusZeroIsZero) {
 }
 
 // A table's slot array is kept for the thread's next table: the next starts empty, whatever the
-// last held and however large it grew, and both hold what they were given.
+// last held and however large it grew, and both hold what they were given. The 10-point table
+// leaves the next one a prefix of the 5,000-point table's array, which that one grows within
+// (rehashing in place, no new array); the 20,000-point one grows past it.
 TEST(PointTable, TheNextTableOnAThreadStartsEmpty) {
   std::vector<Point> points;
   for (int i = 0; i < 5000; ++i) points.push_back({i * 0.5, -i * 0.25});
