@@ -116,8 +116,7 @@ class PointTable {
       used_.clear();
       mask_ = wanted - 1;
       size_ = 0;
-      for (const Slot& slot : moving) place(slot);
-      if (moving.capacity() > kKeptSlots) std::vector<Slot>().swap(moving);
+      for (const Slot& slot : moving) place(slot);  // (at most kKeptSlots / 2 of them: kept arrays only)
       return;
     }
     std::vector<Slot> old = std::move(slots_);
