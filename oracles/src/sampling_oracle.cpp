@@ -166,44 +166,45 @@ class EvenOddRegions {
   explicit EvenOddRegions(const std::vector<const Region*>& regions) {
     // Every edge (either way round, zero-length ones too), with the bit of its region; equal
     // segments merged: `toggle` the regions that hold it an odd number of times (crossing it
-    // changes their parity), `present` every region that holds it.
-    // Equal segments are brought together by sorting on a hash of their coordinates first (equal
-    // segments, equal hashes: -0 hashed as 0), the coordinates deciding only between equal
-    // hashes: the order is no concern, as the bands are put in their own below.
-    struct Raw {
-      Point lo, hi;
-      std::uint64_t bit, hash;
-    };
-    PooledVector<Raw> raw;
+    // changes their parity), `present` every region that holds it. Merged in a table open-addressed
+    // by a hash of the coordinates (equal segments, equal hashes: -0 hashed as 0; a segment with a
+    // NaN equals none), in the order met: the order is no concern, as the bands are put in their
+    // own below, and a ray's parities and boundaries do not depend on the order it reads its
+    // edges in. (Sorting the edges on the hash to bring equal ones together cost more than the
+    // table: a sort of 48-byte records for the five answers' hundreds of edges.)
+    PooledVector<Edge> edges;
+    std::size_t count = 0;
     for (std::size_t r = 0; r < regions.size() && r < kMost; ++r) {
+      for (const Ring& ring : *regions[r]) count += ring.size();
+    }
+    if (count == 0) return;
+    std::size_t capacity = 16;
+    while (capacity < 2 * count) capacity *= 2;
+    constexpr std::uint32_t kFree = 0xffffffffu;
+    PooledVector<std::uint32_t> slots(capacity, kFree);
+    for (std::size_t r = 0; r < regions.size() && r < kMost; ++r) {
+      const std::uint64_t bit = std::uint64_t{1} << r;
       for (const Ring& ring : *regions[r]) {
         for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
           Point a = ring[i], b = ring[(i + 1) % n];
           if (b.x < a.x || (b.x == a.x && b.y < a.y)) std::swap(a, b);
-          raw.push_back({a, b, std::uint64_t{1} << r, mixBits(mixedPointHash(a) + mixedPointHash(b) * 0x9E3779B97F4A7C15ull)});
+          const std::uint64_t hash = mixBits(mixedPointHash(a) + mixedPointHash(b) * 0x9E3779B97F4A7C15ull);
+          for (std::size_t k = hash & (capacity - 1);; k = (k + 1) & (capacity - 1)) {
+            if (slots[k] == kFree) {
+              slots[k] = static_cast<std::uint32_t>(edges.size());
+              Edge e = edgeOf(a, b);
+              e.toggle = e.present = bit;
+              edges.push_back(e);
+              break;
+            }
+            Edge& e = edges[slots[k]];
+            if (e.a == a && e.b == b) {
+              e.toggle ^= bit, e.present |= bit;
+              break;
+            }
+          }
         }
       }
-    }
-    if (raw.empty()) return;
-    // A strict weak order even with NaNs (after every number; equal to each other): a wrong
-    // answer may hold anything.
-    auto less = [](double u, double v) { return std::isnan(v) ? !std::isnan(u) : u < v; };
-    auto before = [&](const Raw& u, const Raw& v) {
-      if (u.hash != v.hash) return u.hash < v.hash;
-      const double uk[4] = {u.lo.x, u.lo.y, u.hi.x, u.hi.y}, vk[4] = {v.lo.x, v.lo.y, v.hi.x, v.hi.y};
-      for (int i = 0; i < 4; ++i) {
-        if (less(uk[i], vk[i])) return true;
-        if (less(vk[i], uk[i])) return false;
-      }
-      return false;
-    };
-    std::sort(raw.begin(), raw.end(), before);
-    PooledVector<Edge> edges;
-    for (std::size_t i = 0; i < raw.size();) {
-      Edge e = edgeOf(raw[i].lo, raw[i].hi);
-      e.toggle = e.present = raw[i].bit;
-      for (++i; i < raw.size() && raw[i].lo == e.a && raw[i].hi == e.b; ++i) e.toggle ^= raw[i].bit, e.present |= raw[i].bit;
-      edges.push_back(e);
     }
     minY_ = maxY_ = edges[0].a.y;
     for (const Edge& e : edges) {
@@ -215,9 +216,15 @@ class EvenOddRegions {
       for (const Edge& e : edges) copies += band(std::max(e.a.y, e.b.y)) - band(std::min(e.a.y, e.b.y)) + 1;
       if (copies <= 16 * edges.size() || bands_ == 1) break;
     }
+    // Each edge's bands, first and last, found once (a band is a division).
+    PooledVector<std::pair<std::size_t, std::size_t>> spans(edges.size());
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const Edge& e = edges[i];
+      spans[i] = {band(std::min(e.a.y, e.b.y)), band(std::max(e.a.y, e.b.y))};
+    }
     start_.assign(bands_ + 1, 0);
-    for (const Edge& e : edges) {
-      for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) ++start_[k + 1];
+    for (const auto& [first, last] : spans) {
+      for (std::size_t k = first; k <= last; ++k) ++start_[k + 1];
     }
     for (std::size_t k = 0; k < bands_; ++k) start_[k + 1] += start_[k];
     // Each band holds copies of its edges (a ray test reads them in order, not scattered), twice:
@@ -231,8 +238,7 @@ class EvenOddRegions {
       into.resize(start_[bands_]);
       PooledVector<std::size_t> fill(start_.begin(), start_.end() - 1);
       for (const std::uint32_t i : order) {
-        const Edge& e = edges[i];
-        for (std::size_t k = band(std::min(e.a.y, e.b.y)), last = band(std::max(e.a.y, e.b.y)); k <= last; ++k) into[fill[k]++] = e;
+        for (std::size_t k = spans[i].first; k <= spans[i].second; ++k) into[fill[k]++] = edges[i];
       }
     };
     std::sort(order.begin(), order.end(), [&](std::uint32_t e, std::uint32_t f) { return edges[e].maxX > edges[f].maxX; });
@@ -426,15 +432,23 @@ class OperandEdges {
   // The largest proper crossing of e with another operand edge, decided exactly. A crossing
   // lies on both edges, so the smaller edge's coordinates bound its magnitude: nothing cancels
   // when a 1e144-long edge crosses a 1e-15 one. Meetings at input vertices need no rounding.
+  // Edges whose boxes lie apart (strictly: a proper crossing is inside both) are passed over
+  // before any orientation, and the walk ends once a crossing reaches e's own magnitude, which
+  // no other can exceed.
   double largestCrossing(const Edge& e) const {
     double largest = 0;
+    const double own = magnitude(e.a, e.b);
+    auto apart = [](double u0, double u1, double v0, double v1) {  // false whenever one is NaN
+      return (u0 < v0 && u0 < v1 && u1 < v0 && u1 < v1) || (v0 < u0 && v0 < u1 && v1 < u0 && v1 < u1);
+    };
     for (const Edge& o : edges_) {
-      if (&o == &e) continue;
+      if (&o == &e || apart(e.a.x, e.b.x, o.a.x, o.b.x) || apart(e.a.y, e.b.y, o.a.y, o.b.y)) continue;
       const int oa = filteredOrientation(e.a, e.b, o.a), ob = filteredOrientation(e.a, e.b, o.b);
       if (oa * ob >= 0) continue;
       const int ea = filteredOrientation(o.a, o.b, e.a), eb = filteredOrientation(o.a, o.b, e.b);
       if (ea * eb >= 0) continue;
-      largest = std::max(largest, std::min(magnitude(e.a, e.b), magnitude(o.a, o.b)));
+      largest = std::max(largest, std::min(own, magnitude(o.a, o.b)));
+      if (largest == own) break;
     }
     return largest;
   }
