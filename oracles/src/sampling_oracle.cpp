@@ -210,17 +210,18 @@ class EvenOddRegions {
     for (const Edge& e : edges) {
       minY_ = std::min({minY_, e.a.y, e.b.y}), maxY_ = std::max({maxY_, e.a.y, e.b.y});
     }
-    // Bands: about one per 4 edges, fewer while long edges would be copied into too many.
+    // Bands: about one per 4 edges, fewer while long edges would be copied into too many. Each
+    // edge's first and last band, as the count that settles the number found them, are kept for
+    // the passes below (a band is a division).
+    PooledVector<std::pair<std::size_t, std::size_t>> spans(edges.size());
     for (bands_ = std::clamp<std::size_t>(edges.size() / 4, 1, 4096);; bands_ /= 2) {
       std::size_t copies = 0;
-      for (const Edge& e : edges) copies += band(std::max(e.a.y, e.b.y)) - band(std::min(e.a.y, e.b.y)) + 1;
+      for (std::size_t i = 0; i < edges.size(); ++i) {
+        const Edge& e = edges[i];
+        spans[i] = {band(std::min(e.a.y, e.b.y)), band(std::max(e.a.y, e.b.y))};
+        copies += spans[i].second - spans[i].first + 1;
+      }
       if (copies <= 16 * edges.size() || bands_ == 1) break;
-    }
-    // Each edge's bands, first and last, found once (a band is a division).
-    PooledVector<std::pair<std::size_t, std::size_t>> spans(edges.size());
-    for (std::size_t i = 0; i < edges.size(); ++i) {
-      const Edge& e = edges[i];
-      spans[i] = {band(std::min(e.a.y, e.b.y)), band(std::max(e.a.y, e.b.y))};
     }
     start_.assign(bands_ + 1, 0);
     for (const auto& [first, last] : spans) {
