@@ -496,6 +496,31 @@ TEST(SamplingOracle, PruningAtRoundedCrossingsKeepsAWrongUnionWrong) {
   EXPECT_TRUE(oracle::sampleCheck(s, c, Op::Union, clip(s, c, Op::Union), options).pass());
 }
 
+// The delta near an edge of S or C is that of its largest crossing, wherever along it a point
+// lies: S's bottom edge (y = 0, to x = 1e6) crosses a small square of C near x = 0.5 and a large
+// one at x = 9e5, so a sliver 1e-12 thick along it by the small square lies within its delta
+// (about 1e-9) and is left out. Without the far square the edge's largest crossing is the small
+// one (delta about 1e-15) and the same sliver is judged wrong. (A search for the largest crossing
+// that stopped at the first one met judged the first answer wrong too.)
+TEST(SamplingOracle, TheDeltaNearAnEdgeIsThatOfItsLargestCrossing) {
+  const Region s{rect(-1, 0, 1e6, 1e6)};
+  const Region small{rect(0.25, -0.25, 0.75, 0.25)};
+  const Region both{rect(0.25, -0.25, 0.75, 0.25), rect(9e5, -0.5, 9e5 + 1, 0.5)};
+  const Ring sliver = rect(0.3, -1e-12, 0.4, 0);  // below S's edge, inside C: not in S n C
+  const Region rightBoth{rect(0.25, 0, 0.75, 0.25), rect(9e5, 0, 9e5 + 1, 0.5)};
+  Region wrongBoth = rightBoth;
+  wrongBoth.push_back(sliver);
+  const Region rightSmall{rect(0.25, 0, 0.75, 0.25)};
+  Region wrongSmall = rightSmall;
+  wrongSmall.push_back(sliver);
+  oracle::SampleOptions options;
+  options.uniformPoints = 200;
+  EXPECT_TRUE(oracle::sampleCheck(s, both, Op::Intersection, rightBoth, options).pass());
+  EXPECT_TRUE(oracle::sampleCheck(s, both, Op::Intersection, wrongBoth, options).pass());
+  EXPECT_TRUE(oracle::sampleCheck(s, small, Op::Intersection, rightSmall, options).pass());
+  EXPECT_FALSE(oracle::sampleCheck(s, small, Op::Intersection, wrongSmall, options).pass());
+}
+
 // fuzz_diff_vatti (corpus input be9aa8b9...), the naive variant's reverse difference: slivers
 // a few hundred ulps wide, one of them wrong at a point 2e-15 from its vertex (hex: the answer's
 // constructed coordinates). Around a vertex a point is left out when the segment from a point
