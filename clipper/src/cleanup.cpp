@@ -26,13 +26,16 @@ class CleanUp {
   explicit CleanUp(ExactCounters& counters) : counters_(counters) {}
 
   // b is the tip of a zero-width spike a -> b -> c: the three are collinear and the path turns
-  // back at b (decided exactly: orientation, then the directions along an axis).
+  // back at b (decided exactly: the directions along an axis, then orientation). The axis test
+  // first: it needs no arithmetic, and it clears most vertices of an answer, whose consecutive
+  // points along an input edge (crossings, rounded) are so nearly collinear that their
+  // orientation goes past the filter to the exact stages.
   bool isSpike(Point a, Point b, Point c) const {
-    if (orientation(a, b, c, counters_) != Sign::Zero) return false;
     const bool alongX = a.x != b.x;
     const int in = alongX ? signOfDifference(b.x, a.x) : signOfDifference(b.y, a.y);
     const int out = alongX ? signOfDifference(c.x, b.x) : signOfDifference(c.y, b.y);
-    return in * out < 0 || c == a;
+    if (!(in * out < 0 || c == a)) return false;
+    return orientation(a, b, c, counters_) == Sign::Zero;
   }
 
   // Drops repeated points and spike tips, including ones that only appear once others are gone
@@ -195,15 +198,30 @@ struct FlatEdges {
 // A uniform grid over the edges' bounding boxes: each edge is listed in every cell its closed box
 // meets, so the edges whose box holds a point are among those of the point's cell. The cell size
 // follows the edges' mean extent, coarsened until no edge is listed in too many cells in all.
+// An edge's box: its x-range and y-range.
+struct EdgeBox {
+  double x0, x1, y0, y1;
+};
+
 class EdgeGrid {
  public:
-  EdgeGrid(const FlatEdges& op, Rows& rows) : rows_(rows) {
+  // boxes[e]: edge e's box; spans: scratch for each edge's cells.
+  EdgeGrid(const FlatEdges& op, const std::vector<EdgeBox>& boxes, Rows& rows, std::vector<std::uint32_t>& spans)
+      : rows_(rows) {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (std::uint32_t e = 0; e < op.size(); ++e) {
       const Point p = op.from(e);
       x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
     }
     x0_ = x0, y0_ = y0;
+    // Each edge's first and last column and row, computed once for the grid chosen: the fill
+    // below walks them twice, and computing them in its loops' conditions (a division each) was
+    // most of the grid's time (perf).
+    spans.resize(4 * std::size_t{op.size()});
+    auto span = [&](std::uint32_t e) {
+      const EdgeBox& b = boxes[e];
+      spans[4 * e] = cellX(b.x0), spans[4 * e + 1] = cellX(b.x1), spans[4 * e + 2] = cellY(b.y0), spans[4 * e + 3] = cellY(b.y1);
+    };
     const double n = static_cast<double>(std::max<std::size_t>(op.size(), 1));
     for (int side = static_cast<int>(std::min(2048.0, std::ceil(std::sqrt(n / 2)))); side >= 1; side /= 2) {
       side_ = static_cast<std::uint32_t>(side);
@@ -214,20 +232,20 @@ class EdgeGrid {
       }
       std::size_t listed = 0;
       for (std::uint32_t e = 0; e < op.size(); ++e) {
-        const Point a = op.from(e), b = op.to(e);
-        listed += (cellX(std::max(a.x, b.x)) - cellX(std::min(a.x, b.x)) + 1) *
-                  std::size_t{cellY(std::max(a.y, b.y)) - cellY(std::min(a.y, b.y)) + 1};
+        span(e);
+        listed += std::size_t{spans[4 * e + 1] - spans[4 * e] + 1} * (spans[4 * e + 3] - spans[4 * e + 2] + 1);
         if (listed > 16 * std::size_t{op.size()}) break;
       }
       if (listed <= 16 * std::size_t{op.size()}) break;
     }
+    if (side_ == 1) {
+      for (std::uint32_t e = 0; e < op.size(); ++e) span(e);
+    }
     rows_.fill(std::size_t{side_} * side_, [&](auto&& add) {
       for (std::uint32_t e = 0; e < op.size(); ++e) {
-        const Point a = op.from(e), b = op.to(e);
-        for (std::uint32_t cy = cellY(std::min(a.y, b.y)); cy <= cellY(std::max(a.y, b.y)); ++cy) {
-          for (std::uint32_t cx = cellX(std::min(a.x, b.x)); cx <= cellX(std::max(a.x, b.x)); ++cx) {
-            add(cy * side_ + cx, e);
-          }
+        const std::uint32_t* c = &spans[4 * e];
+        for (std::uint32_t cy = c[2]; cy <= c[3]; ++cy) {
+          for (std::uint32_t cx = c[0]; cx <= c[1]; ++cx) add(cy * side_ + cx, e);
         }
       }
     });
@@ -257,10 +275,8 @@ class EdgeGrid {
 // dozen fresh arrays a call cost more than the work (perf: allocation was a fifth of the pass).
 // Let go when larger than kKeepBytes, like the clip's other spares (recycled.h).
 struct SeamScratch {
-  struct Box {
-    double x0, x1, y0, y1;
-  };
-  std::vector<std::uint32_t> next, fromNumber, toNumber, pieceFrom, pieceTo, forwardOf, backwardOf, kept, left;
+  using Box = EdgeBox;
+  std::vector<std::uint32_t> next, fromNumber, toNumber, pieceFrom, pieceTo, forwardOf, backwardOf, kept, left, spans;
   PointNumbers numbers;
   Rows edgesAt, cells, around;
   std::vector<Box> boxes;
@@ -273,7 +289,7 @@ struct SeamScratch {
 
   std::size_t bytes() const {
     std::size_t b = numbers.bytes() + edgesAt.bytes() + cells.bytes() + around.bytes();
-    for (const auto* v : {&next, &fromNumber, &toNumber, &pieceFrom, &pieceTo, &forwardOf, &backwardOf, &kept, &left}) {
+    for (const auto* v : {&next, &fromNumber, &toNumber, &pieceFrom, &pieceTo, &forwardOf, &backwardOf, &kept, &left, &spans}) {
       b += v->capacity() * sizeof(std::uint32_t);
     }
     b += boxes.capacity() * sizeof(Box) + cuts.capacity() * sizeof(cuts[0]) + pieces.capacity() * sizeof(pieces[0]);
@@ -354,7 +370,7 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
       }
     }
   } else {
-    const EdgeGrid grid(op, s.cells);
+    const EdgeGrid grid(op, boxes, s.cells, s.spans);
     for (std::uint32_t k = 0; k < numbers.size(); ++k) {
       const Point x = numbers.point(k);
       for (auto [it, end] = grid.near(x); it != end; ++it) {
