@@ -342,8 +342,8 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
   auto& cuts = s.cuts;  // (edge, number of a point cutting it)
   cuts.clear();
   // The screen, inline in the loops below: on the exact fuzz target's grown corpus it turns away
-  // 93 % of the edges a point meets there, and a call for each was a sixth of the exact clip's
-  // time (perf, release build).
+  // 76 % of the (point, edge) pairs met there (1,265,177 of 5,367,103 held), and a call for each
+  // pair was a sixth of the exact clip's time (perf, release build).
   auto boxHolds = [&](std::uint32_t e, Point x) {
     const SeamScratch::Box& box = boxes[e];
     return (x.x >= box.x0) & (x.x <= box.x1) & (x.y >= box.y0) & (x.y <= box.y1);
