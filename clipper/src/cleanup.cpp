@@ -195,14 +195,14 @@ struct FlatEdges {
   Point to(std::uint32_t e) const { return points[next[e]]; }
 };
 
-// A uniform grid over the edges' bounding boxes: each edge is listed in every cell its closed box
-// meets, so the edges whose box holds a point are among those of the point's cell. The cell size
-// follows the edges' mean extent, coarsened until no edge is listed in too many cells in all.
 // An edge's box: its x-range and y-range.
 struct EdgeBox {
   double x0, x1, y0, y1;
 };
 
+// A uniform grid over the edges' bounding boxes: each edge is listed in every cell its closed box
+// meets, so the edges whose box holds a point are among those of the point's cell. The cell size
+// follows the edges' mean extent, coarsened until no edge is listed in too many cells in all.
 class EdgeGrid {
  public:
   // boxes[e]: edge e's box; spans: scratch for each edge's cells.
@@ -228,6 +228,7 @@ class EdgeGrid {
       cellW_ = (x1 - x0) / side, cellH_ = (y1 - y0) / side;
       if (!(cellW_ > 0) || !(cellH_ > 0) || !std::isfinite(cellW_) || !std::isfinite(cellH_)) {
         side_ = 1, cellW_ = cellH_ = INFINITY;
+        for (std::uint32_t e = 0; e < op.size(); ++e) span(e);
         break;
       }
       std::size_t listed = 0;
@@ -236,10 +237,7 @@ class EdgeGrid {
         listed += std::size_t{spans[4 * e + 1] - spans[4 * e] + 1} * (spans[4 * e + 3] - spans[4 * e + 2] + 1);
         if (listed > 16 * std::size_t{op.size()}) break;
       }
-      if (listed <= 16 * std::size_t{op.size()}) break;
-    }
-    if (side_ == 1) {
-      for (std::uint32_t e = 0; e < op.size(); ++e) span(e);
+      if (listed <= 16 * std::size_t{op.size()}) break;  // every edge's span is in place
     }
     rows_.fill(std::size_t{side_} * side_, [&](auto&& add) {
       for (std::uint32_t e = 0; e < op.size(); ++e) {
@@ -275,11 +273,10 @@ class EdgeGrid {
 // dozen fresh arrays a call cost more than the work (perf: allocation was a fifth of the pass).
 // Let go when larger than kKeepBytes, like the clip's other spares (recycled.h).
 struct SeamScratch {
-  using Box = EdgeBox;
   std::vector<std::uint32_t> next, fromNumber, toNumber, pieceFrom, pieceTo, forwardOf, backwardOf, kept, left, spans;
   PointNumbers numbers;
   Rows edgesAt, cells, around;
-  std::vector<Box> boxes;
+  std::vector<EdgeBox> boxes;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> cuts;
   std::vector<std::pair<Point, Point>> pieces;
   std::vector<std::uint32_t> pairSlots;  // dissolveSeams' (from, to) table: a piece index each, or kNoPiece
@@ -292,7 +289,7 @@ struct SeamScratch {
     for (const auto* v : {&next, &fromNumber, &toNumber, &pieceFrom, &pieceTo, &forwardOf, &backwardOf, &kept, &left, &spans}) {
       b += v->capacity() * sizeof(std::uint32_t);
     }
-    b += boxes.capacity() * sizeof(Box) + cuts.capacity() * sizeof(cuts[0]) + pieces.capacity() * sizeof(pieces[0]);
+    b += boxes.capacity() * sizeof(EdgeBox) + cuts.capacity() * sizeof(cuts[0]) + pieces.capacity() * sizeof(pieces[0]);
     b += pairSlots.capacity() * sizeof(std::uint32_t) + count.capacity() * sizeof(int) + byPair.capacity() * sizeof(byPair[0]);
     return b + dropped.capacity() + used.capacity();
   }
@@ -333,7 +330,7 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
   // with e (a collinear overlap, split at the other's endpoints). A point collinear with e lies
   // strictly inside it iff it is in e's closed box and is neither end: the boxes, in one array,
   // screen the edges (all of them, or those of x's grid cell) before any orientation is decided.
-  std::vector<SeamScratch::Box>& boxes = s.boxes;
+  std::vector<EdgeBox>& boxes = s.boxes;
   boxes.resize(op.size());
   for (std::uint32_t e = 0; e < op.size(); ++e) {
     const Point a = op.from(e), b = op.to(e);
@@ -345,7 +342,7 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
   // 76 % of the (point, edge) pairs met there (1,265,177 of 5,367,103 held), and a call for each
   // pair was a sixth of the exact clip's time (perf, release build).
   auto boxHolds = [&](std::uint32_t e, Point x) {
-    const SeamScratch::Box& box = boxes[e];
+    const EdgeBox& box = boxes[e];
     return (x.x >= box.x0) & (x.x <= box.x1) & (x.y >= box.y0) & (x.y <= box.y1);
   };
   // e, whose box holds x (point k): cut at x if x is not an end of e and is collinear with e and
@@ -408,10 +405,9 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
   }
   // Counts of directed pieces, keyed by their (from, to) numbers: each piece is counted under the
   // first piece with its ends, found in a table open-addressed by the pair, and its reverse under
-  // the first piece running the other way, if any. (The pairs were sorted, and a binary search for
-  // every piece and for its reverse was this pass's hottest loop, perf.)
+  // the first piece running the other way, if any (kNoPiece when none). (The pairs were sorted,
+  // and a binary search for every piece and for its reverse was this pass's hottest loop, perf.)
   auto key = [](std::uint32_t u, std::uint32_t v) { return (std::uint64_t{u} << 32) | v; };
-  const auto none = static_cast<std::uint32_t>(pieces.size());
   int bits = 4;
   while ((std::size_t{1} << bits) < 2 * pieces.size()) ++bits;
   const std::size_t mask = (std::size_t{1} << bits) - 1;
@@ -423,7 +419,7 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
     return i;
   };
   std::vector<int>& count = s.count;
-  count.assign(pieces.size() + 1, 0);  // by first piece; the last: for pairs no piece has, never counted
+  count.assign(pieces.size(), 0);  // by first piece
   std::vector<std::uint32_t>&forwardOf = s.forwardOf, &backwardOf = s.backwardOf;
   forwardOf.resize(pieces.size()), backwardOf.resize(pieces.size());
   for (std::uint32_t i = 0; i < pieces.size(); ++i) {
@@ -433,15 +429,14 @@ void CleanUp::dissolveSeams(const FlatRings& rings, FlatRings& out) const {
     ++count[forwardOf[i]];
   }
   for (std::uint32_t i = 0; i < pieces.size(); ++i) {
-    const std::uint32_t reverse = slots[slotOf(key(pieceTo[i], pieceFrom[i]))];
-    backwardOf[i] = reverse == kNoPiece ? none : reverse;
+    backwardOf[i] = slots[slotOf(key(pieceTo[i], pieceFrom[i]))];
   }
   std::vector<std::uint32_t>& kept = s.kept;
   kept.clear();
   for (std::uint32_t i = 0; i < pieces.size(); ++i) {
     const std::uint32_t u = pieceFrom[i], v = pieceTo[i];
     int& forward = count[forwardOf[i]];
-    int* backward = backwardOf[i] < none ? &count[backwardOf[i]] : nullptr;
+    int* backward = backwardOf[i] != kNoPiece ? &count[backwardOf[i]] : nullptr;
     if (forward > 0 && backward && *backward > 0 && u != v) {
       --forward, --*backward;  // this piece and one opposite copy cancel
       continue;
