@@ -681,6 +681,38 @@ TEST(SamplingOracle, EachCornerThroughAVertexIsJudgedAtItsOwnScale) {
   EXPECT_TRUE(oracle::SamplingJudge(s, c, options).check(Op::Union, clip(s, c, Op::Union)).pass());
 }
 
+// A vertex nearer another edge than its smallest radius (a fuzz input's clip: a ring of denormal
+// coordinates at the origin, with an edge along the x axis): all its corners' radii are sampled,
+// and beyond the disk where only the edges near it cut, the eight directions only at each
+// corner's smallest radius there; at the larger ones, each corner's bisector both ways. The
+// paper arithmetic's intersection, difference and xor are wrong beyond rounding, by slivers
+// 1e-12 high along the x axis that a bisector meets 0.25 from the vertex. Without the bisectors
+// beyond that smallest radius, the five answers judged together all passed.
+TEST(SamplingOracle, EveryRadiusOfACornerKeepsItsBisector) {
+  const Region s{
+      {{7, 6}, {8, 0}, {-9.8813129168249309e-324, 1.8189894035458565e-12}, {3, 7.000030517578125}, {1, 5},
+       {5.0000000000000027, 0.0001220703125}, {4.9999999999999982, 8}, {8, 7}, {5.0000000000000009, 4}},
+      {{8, 4}, {8, 0}, {0, 0}, {2.9999999999999991, 4.0000001192092896}, {3.0000000000000009, 8.0000000000000036},
+       {2.00048828125, 2}, {1, 0}, {1.0001220703125, 1.0000000000000002}, {2.03125, 1}, {2, 5}, {1, 5},
+       {4.0001220703125, 1}, {6, 0}, {1, 0}, {6.000000000007276, 5.9999999999999991}, {0, 0}},
+      {{1.4901161193847656e-08, 3.5}, {0, 0}, {0, 1.4821969375237396e-323}}};
+  const Region c{{{0, 1.4821969375237396e-323}, {-4.9406564584124654e-324, 0}, {0, 0}, {0, 0}, {0, 0},
+                  {4.9406564584124654e-324, 0}, {0, -1.4821969375237396e-323}, {0, 0}, {6, 0}, {0, 0}, {0, 0}, {0, 0}}};
+  std::vector<std::pair<Op, Region>> answers;
+  for (Op op : kAllOps) answers.emplace_back(op, clip(s, c, op, optionsOf(Variant::Naive)));
+  std::vector<std::pair<Op, const Region*>> all;
+  for (const auto& [op, r] : answers) all.emplace_back(op, &r);
+  oracle::SampleOptions options;
+  options.uniformPoints = 200;  // as the clip fuzz targets judge
+  const auto verdicts = oracle::SamplingJudge(s, c, options).check(all);
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    const Op op = answers[i].first;
+    if (op != Op::Intersection && op != Op::Difference && op != Op::Xor) continue;
+    EXPECT_FALSE(oracle::exactCheck(s, c, op, answers[i].second).pass) << name(op);
+    EXPECT_FALSE(verdicts[i].pass()) << name(op);
+  }
+}
+
 // The fuzz targets' judge stops once every answer has a mismatch (stopWhenAllFail): the answers'
 // verdicts and first mismatches stay the full check's, one found only near a vertex (the notched
 // union below) beside one found among the first uniform points included; and it does stop.

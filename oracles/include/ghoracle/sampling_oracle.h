@@ -19,7 +19,10 @@
 // falls in included), and a direction's point only where its sector's middle was not judged.
 // Where a radius is kept so, only the smallest radius outside the clearance is sampled too, in
 // the sectors' middle directions and both ways along the bisector: the larger radii reach the
-// neighbourhoods of other vertices, which are sampled there.
+// neighbourhoods of other vertices, which are sampled there. A vertex too near another edge for
+// any radius to be kept gets every radius, but beyond the disk where only the edges nearest it
+// cut, the eight directions at the smallest only and its bisector at the others. Each corner's
+// bisector is sampled at that corner's radii alone.
 //
 // Where a correct answer may legitimately disagree: within the rounding zones (exact_oracle.h),
 // which lie along the lines of S and C. A point is skipped when it is within
