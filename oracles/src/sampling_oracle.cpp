@@ -892,7 +892,7 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
   double cosines[8], sines[8];  // the eight directions, the same at every radius
   for (int k = 0; k < 8; ++k) {
     const double a = phase + k * pi / 4;
-    cosines[k] = std::cos(a), sines[k] = std::sin(a);
+    ::sincos(a, &sines[k], &cosines[k]);  // glibc's: the bits of std::sin and std::cos, in one call
   }
   // A corner's radii: the global ones and its local ones. Each corner is sampled as alone (below);
   // the union of what they need is sampled once.
