@@ -839,9 +839,10 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
   // regression and grown: 1,479 naive and sweep inputs, 785 exact) this judged 12 % (naive,
   // sweep) to 21 % (exact) fewer points with the same verdict on every answer; merging within a
   // factor 8, one naive answer fewer was found wrong.
-  // Each corner's two edges' halves (halves: no overflow near 2^1023) and their lengths, halved.
+  // Each corner's two edges' halves (halves: no overflow near 2^1023), their lengths halved, and
+  // its local scale (infinite when both edges have length 0).
   struct Legs {
-    double ux, uy, wx, wy, lu, lw;
+    double ux, uy, wx, wy, lu, lw, local;
   };
   thread_local std::vector<Legs> legs;
   legs.clear();
@@ -850,11 +851,12 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
   for (const auto& [prev, next] : corners) {
     const double ux = prev.x / 2 - q.x / 2, uy = prev.y / 2 - q.y / 2;
     const double wx = next.x / 2 - q.x / 2, wy = next.y / 2 - q.y / 2;
-    legs.push_back({ux, uy, wx, wy, std::hypot(ux, uy), std::hypot(wx, wy)});
+    const double lu = std::hypot(ux, uy), lw = std::hypot(wx, wy);
     double local = std::numeric_limits<double>::infinity();
-    for (const double halfLength : {legs.back().lu, legs.back().lw}) {
+    for (const double halfLength : {lu, lw}) {
       if (halfLength * 2 > 0) local = std::min(local, halfLength * 2);
     }
+    legs.push_back({ux, uy, wx, wy, lu, lw, local});
     if (std::isfinite(local)) locals.push_back(local);
   }
   std::sort(locals.begin(), locals.end());
@@ -868,12 +870,12 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
   // lies between two of the eight rays, never across the bisector.
   thread_local std::vector<Point> bisectors;
   bisectors.clear();
-  // Per corner, its bisector's place in bisectors and its local scale (-1: it has none).
+  // Per corner, its bisector's place in bisectors (kNoBisector: an edge of length 0).
+  constexpr std::size_t kNoBisector = std::numeric_limits<std::size_t>::max();
   thread_local std::vector<std::size_t> cornerBisector;
-  thread_local std::vector<double> cornerLocal;
-  cornerBisector.assign(corners.size(), 0), cornerLocal.assign(corners.size(), -1);
+  cornerBisector.assign(corners.size(), kNoBisector);
   for (std::size_t c = 0; c < corners.size(); ++c) {
-    const auto [ux, uy, wx, wy, lu, lw] = legs[c];
+    const auto [ux, uy, wx, wy, lu, lw, local] = legs[c];
     if (!(lu > 0 && lw > 0)) continue;
     double bx = ux / lu + wx / lw, by = uy / lu + wy / lw;
     const double lb = std::hypot(bx, by);
@@ -886,7 +888,6 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
     auto it = std::find(bisectors.begin(), bisectors.end(), b);
     if (it == bisectors.end()) it = std::find(bisectors.begin(), bisectors.end(), opposite);
     cornerBisector[c] = static_cast<std::size_t>(it - bisectors.begin());
-    cornerLocal[c] = 2 * std::min(lu, lw);
     if (it == bisectors.end()) bisectors.push_back(b);
   }
   double cosines[8], sines[8];  // the eight directions, the same at every radius
@@ -971,10 +972,10 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
   thread_local std::vector<std::pair<double, std::size_t>> bisectorRadii[3];  // (radius, bisector)
   for (auto& set : bisectorRadii) set.clear();
   for (std::size_t c = 0; c < corners.size(); ++c) {
-    if (cornerLocal[c] < 0) continue;  // no bisector
+    if (cornerBisector[c] == kNoBisector) continue;
     double merged = locals[0];  // its local scale as merged above: the largest at most its own
     for (double local : locals) {
-      if (local <= cornerLocal[c]) merged = local;
+      if (local <= legs[c].local) merged = local;
     }
     withLocal(merged);
     plan(own, 8, wider, [&](Kind kind, double r) { bisectorRadii[kind].push_back({r, cornerBisector[c]}); });
@@ -1010,6 +1011,7 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
   // At a radius all of some corner's are sampled at: the eight directions, and the bisectors of
   // those corners.
   auto around = [&](double radius) {
+    wantBisectors(kFull, radius);
     directions(radius, [&](std::size_t k, Point p) {
       if (k < 8 || wanted[(k - 8) / 2]) at(k, p, radius);
     });
@@ -1126,7 +1128,6 @@ void aroundVertex(Point q, const std::vector<std::pair<Point, Point>>& corners, 
   };
   for (double r : radii) {
     if (among(radiiOf[kFull], r)) {
-      wantBisectors(kFull, r);
       around(r);
     } else if (among(radiiOf[kOutside], r)) {
       if (r == smallestOutside) {
