@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include "even_odd_regions.h"
 #include "ghoracle/exact_orientation.h"
 #include "filtered_orientation.h"
 #include "judging_scale.h"
@@ -18,6 +19,7 @@
 #include "point_table.h"
 #include "pooled_vector.h"
 #include "ulp.h"
+#include "uniform_bucket.h"
 #include "uniform_double.h"
 
 namespace gh::oracle {
@@ -62,16 +64,6 @@ bool lineDistanceAtMost(Point a, Point b, Point p, double bound) {
     if (det - error > bound) return false;
   }
   return crossAtMost(a, b, p, bound);
-}
-
-// Which of n equal buckets over [lo, hi] holds v, clamped to the ends: a monotone function of
-// v, so that everything stored under the buckets of [a, b] is found from any v in [a, b]. A
-// zero-width range puts v = lo (NaN) in bucket 0, and v beyond it (infinite) in the last.
-std::size_t bucket(double v, double lo, double hi, std::size_t n) {
-  const double f = (v - lo) / (hi - lo) * static_cast<double>(n);
-  if (!(f > 0)) return 0;
-  if (!(f < static_cast<double>(n))) return n - 1;  // before the conversion: inf does not fit
-  return static_cast<std::size_t>(f);
 }
 
 // The cells of a uniform grid (side x side over [x0, x1] x [y0, y1], cells by bucket()) that a
@@ -139,173 +131,6 @@ void forEachCellNear(Point a, Point b, double widen, double x0, double x1, doubl
     for (std::size_t column = first; column <= last; ++column) f(row * side + column);
   });
 }
-
-// Several regions' edges in horizontal bands, so that a ray test visits only the edges whose
-// y-range can hold the point's y (every other edge lies wholly above or below it and cannot
-// count). The band of a y is a monotone function of y, so an edge with ymin <= y <= ymax is always
-// found. A point right of its band's middle casts its ray to the right, one left of it to the
-// left, so that a test reads about half the band: under the half-open rule every ring crosses the
-// point's horizontal line an even number of times, so off the boundary both rays have the same
-// parity. Up to 64 regions are tested by one ray, each distinct segment once with a mask of the
-// regions it bounds: the five answers of a fuzz target share most of their edges (each piece of
-// S's and C's boundaries bounds about three of them), and S and C are tested together.
-class EvenOddRegions {
- public:
-  static constexpr std::size_t kMost = 64;
-  struct Sides {
-    std::uint64_t inside = 0;    // bit i: the point is inside region i (where it is not on it)
-    std::uint64_t boundary = 0;  // bit i: the point lies on an edge of region i
-    // Region i's side: nullopt on its boundary (inside and outside are a convention there).
-    std::optional<bool> of(std::size_t i) const {
-      if (boundary >> i & 1) return std::nullopt;
-      return (inside >> i & 1) != 0;
-    }
-  };
-
-  EvenOddRegions() = default;
-  explicit EvenOddRegions(const std::vector<const Region*>& regions) {
-    // Every edge (either way round, zero-length ones too), with the bit of its region; equal
-    // segments merged: `toggle` the regions that hold it an odd number of times (crossing it
-    // changes their parity), `present` every region that holds it. Merged in a table open-addressed
-    // by a hash of the coordinates (equal segments, equal hashes: -0 hashed as 0; a segment with a
-    // NaN equals none), in the order met: the order is no concern, as the bands are put in their
-    // own below, and a ray's parities and boundaries do not depend on the order it reads its
-    // edges in. (Sorting the edges on the hash to bring equal ones together cost more than the
-    // table: a sort of 48-byte records for the five answers' hundreds of edges.)
-    PooledVector<Edge> edges;
-    std::size_t count = 0;
-    for (std::size_t r = 0; r < regions.size() && r < kMost; ++r) {
-      for (const Ring& ring : *regions[r]) count += ring.size();
-    }
-    if (count == 0) return;
-    std::size_t capacity = 16;
-    while (capacity < 2 * count) capacity *= 2;
-    constexpr std::uint32_t kFree = 0xffffffffu;
-    PooledVector<std::uint32_t> slots(capacity, kFree);
-    for (std::size_t r = 0; r < regions.size() && r < kMost; ++r) {
-      const std::uint64_t bit = std::uint64_t{1} << r;
-      for (const Ring& ring : *regions[r]) {
-        for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
-          Point a = ring[i], b = ring[(i + 1) % n];
-          if (b.x < a.x || (b.x == a.x && b.y < a.y)) std::swap(a, b);
-          const std::uint64_t hash = mixBits(mixedPointHash(a) + mixedPointHash(b) * 0x9E3779B97F4A7C15ull);
-          for (std::size_t k = hash & (capacity - 1);; k = (k + 1) & (capacity - 1)) {
-            if (slots[k] == kFree) {
-              slots[k] = static_cast<std::uint32_t>(edges.size());
-              Edge e = edgeOf(a, b);
-              e.toggle = e.present = bit;
-              edges.push_back(e);
-              break;
-            }
-            Edge& e = edges[slots[k]];
-            if (e.a == a && e.b == b) {
-              e.toggle ^= bit, e.present |= bit;
-              break;
-            }
-          }
-        }
-      }
-    }
-    minY_ = maxY_ = edges[0].a.y;
-    for (const Edge& e : edges) {
-      minY_ = std::min({minY_, e.a.y, e.b.y}), maxY_ = std::max({maxY_, e.a.y, e.b.y});
-    }
-    // Bands: about one per 4 edges, fewer while long edges would be copied into too many. Each
-    // edge's first and last band, as the count that settles the number found them, are kept for
-    // the passes below (a band is a division).
-    PooledVector<std::pair<std::size_t, std::size_t>> spans(edges.size());
-    for (bands_ = std::clamp<std::size_t>(edges.size() / 4, 1, 4096);; bands_ /= 2) {
-      std::size_t copies = 0;
-      for (std::size_t i = 0; i < edges.size(); ++i) {
-        const Edge& e = edges[i];
-        spans[i] = {band(std::min(e.a.y, e.b.y)), band(std::max(e.a.y, e.b.y))};
-        copies += spans[i].second - spans[i].first + 1;
-      }
-      if (copies <= 16 * edges.size() || bands_ == 1) break;
-    }
-    start_.assign(bands_ + 1, 0);
-    for (const auto& [first, last] : spans) {
-      for (std::size_t k = first; k <= last; ++k) ++start_[k + 1];
-    }
-    for (std::size_t k = 0; k < bands_; ++k) start_[k + 1] += start_[k];
-    // Each band holds copies of its edges (a ray test reads them in order, not scattered), twice:
-    // from the rightmost right end leftwards (a ray to the right stops at the first edge wholly
-    // left of its point, as every edge after it is) and from the leftmost left end rightwards.
-    // The edges are put in each order once, by their indices, and dealt out to the bands in it:
-    // sorting every band's copies (of 64-byte edges) was a third of the constructor's time.
-    PooledVector<std::uint32_t> order(edges.size());
-    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    auto deal = [&](PooledVector<Edge>& into) {
-      into.resize(start_[bands_]);
-      PooledVector<std::size_t> fill(start_.begin(), start_.end() - 1);
-      for (const std::uint32_t i : order) {
-        for (std::size_t k = spans[i].first; k <= spans[i].second; ++k) into[fill[k]++] = edges[i];
-      }
-    };
-    std::sort(order.begin(), order.end(), [&](std::uint32_t e, std::uint32_t f) { return edges[e].maxX > edges[f].maxX; });
-    deal(rightward_);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t e, std::uint32_t f) { return edges[e].minX < edges[f].minX; });
-    deal(leftward_);
-    middle_.assign(bands_, 0);
-    for (std::size_t k = 0; k < bands_; ++k) {
-      // The middle of the band's x-range (in halves: no overflow near 2^1023).
-      if (start_[k + 1] > start_[k]) middle_[k] = leftward_[start_[k]].minX / 2 + rightward_[start_[k]].maxX / 2;
-    }
-  }
-
-  // Even-odd parity of a ray from p for every region at once, exactly, and the regions on whose
-  // edges p lies.
-  Sides inside(Point p) const {
-    if (rightward_.empty() || !(p.y >= minY_ && p.y <= maxY_)) return {};
-    const std::size_t k = band(p.y);
-    return p.x >= middle_[k] ? parity<true>(p, rightward_.data() + start_[k], rightward_.data() + start_[k + 1])
-                             : parity<false>(p, leftward_.data() + start_[k], leftward_.data() + start_[k + 1]);
-  }
-
- private:
-  struct Edge {
-    Point a, b;
-    double minX, maxX;
-    std::uint64_t toggle = 0, present = 0;
-  };
-  static Edge edgeOf(Point a, Point b) { return {a, b, std::min(a.x, b.x), std::max(a.x, b.x)}; }
-
-  // The parities of the edges in [first, last) that cross p's horizontal line on the ray's side
-  // of p, and the edges p lies on.
-  template <bool kToTheRight>
-  static Sides parity(Point p, const Edge* first, const Edge* last) {
-    Sides sides;
-    for (const Edge* e = first; e != last; ++e) {
-      if (kToTheRight ? p.x > e->maxX : p.x < e->minX) break;  // this edge and all after it lie behind p
-      const Point& a = e->a;
-      const Point& b = e->b;
-      if (p.y < std::min(a.y, b.y) || p.y > std::max(a.y, b.y)) continue;
-      const bool crosses = (a.y > p.y) != (b.y > p.y);
-      const bool within = p.x >= e->minX && p.x <= e->maxX;
-      if (!crosses && !within) continue;
-      if (crosses && !within) {  // wholly on the ray's side of p: no orientation needed
-        sides.inside ^= e->toggle;
-        continue;
-      }
-      const int o = filteredOrientation(a, b, p);
-      if (o == 0) {  // within its x-range and on its line: on the edge
-        sides.boundary |= e->present;
-        continue;
-      }
-      // The edge crosses p's horizontal line to the right of p when p is on its left going
-      // upward (on its right going downward); to the left of p in the other two cases.
-      if (crosses && ((b.y > a.y ? o > 0 : o < 0) == kToTheRight)) sides.inside ^= e->toggle;
-    }
-    return sides;
-  }
-
-  std::size_t band(double y) const { return bucket(y, minY_, maxY_, bands_); }
-  double minY_ = 0, maxY_ = 0;
-  std::size_t bands_ = 1;
-  PooledVector<std::size_t> start_;
-  PooledVector<Edge> rightward_, leftward_;  // each band's edges, by right end down, by left end up
-  PooledVector<double> middle_;              // per band: rays from points left of it go left
-};
 
 // The edges of S and C, with what a point near one needs to know: how far from it a correct
 // answer may legitimately disagree. The exact oracle's rounding zone along a line of S or C
@@ -1255,12 +1080,15 @@ class Sampler {
       reach[i].grow(answers[i].result);
       slack[i] = slackOf(reach[i]);
     }
-    // The answers' sides, by one ray per point for each group of up to 64 answers.
+    // The answers' sides, by one ray per point for each group of up to 64 answers. Without
+    // through edges: built for every check, their sorting cost more than they saved (on the exact
+    // target's grown corpus, 4.9 % more instructions with them than without); S and C's bands,
+    // built once per judge and asked for every fresh point, have them (even_odd_regions.h).
     std::vector<EvenOddRegions> inR;
     for (std::size_t first = 0; first < n; first += EvenOddRegions::kMost) {
       std::vector<const Region*> group;
       for (std::size_t i = first; i < n && i < first + EvenOddRegions::kMost; ++i) group.push_back(&answers[i].result);
-      inR.emplace_back(group);
+      inR.emplace_back(group, false);
     }
     // A point's sides of every answer, each group's ray cast when first asked for (near a
     // vertex, most answers' sides follow from the rays there: RaysFrom).
