@@ -101,9 +101,10 @@ class EvenOddRegions {
     for (const Edge& e : edges) {
       minY_ = std::min({minY_, e.a.y, e.b.y}), maxY_ = std::max({maxY_, e.a.y, e.b.y});
     }
-    // Bands: about one per 4 edges, fewer while long edges would be copied into too many. Each
-    // edge's first and last band, as the count that settles the number found them, are kept for
-    // the passes below (a band is a division).
+    // Bands: about one per 4 edges (one per 2 with through edges, which a ray reads by a binary
+    // search), fewer while long edges would be copied into too many (16 copies an edge on average,
+    // 24 with through edges). Each edge's first and last band, as the count that settles the number
+    // found them, are kept for the passes below (a band is a division).
     PooledVector<std::pair<std::size_t, std::size_t>> spans(edges.size());
     const std::size_t perBand = throughBands ? 2 : 4, mostCopies = throughBands ? 24 : 16;
     for (bands_ = std::clamp<std::size_t>(edges.size() / perBand, 1, 4096);; bands_ /= 2) {
@@ -128,7 +129,9 @@ class EvenOddRegions {
     auto low = [&](std::size_t k) { return minY_ + static_cast<double>(k) * height - margin; };
     auto high = [&](std::size_t k) { return minY_ + static_cast<double>(k + 1) * height + margin; };
     // Whether edge e runs through band k, and the x-range its line has over the band's heights
-    // (widened likewise: its crossing with any line there lies inside).
+    // (widened likewise: its crossing with any line there lies inside). Only a narrow range (at
+    // most 8 bands' worth of the edges' x-extent) counts: a wide one would keep the running maximum
+    // of the ranges high and a ray's backward walk long; such an edge is read with the others.
     auto through = [&](const Edge& e, std::size_t k, double& x0, double& x1) {
       if (!banded) return false;
       const double y0 = low(k), y1 = high(k);
@@ -139,15 +142,23 @@ class EvenOddRegions {
       x0 = std::min(xa, xb) - widen, x1 = std::max(xa, xb) + widen;
       return std::isfinite(x0) && std::isfinite(x1) && x1 - x0 <= narrow;
     };
-    // Each band's other edges, and its through edges.
+    // Each band's other edges, and its through edges, each copy's range found once for the
+    // passes below (NaN where it does not run through): edge i's copy in band k is
+    // range[copyStart[i] + k - spans[i].first].
+    PooledVector<std::size_t> copyStart(edges.size() + 1, 0);
+    for (std::size_t i = 0; i < edges.size(); ++i) copyStart[i + 1] = copyStart[i] + spans[i].second - spans[i].first + 1;
+    PooledVector<std::pair<double, double>> range(copyStart.back(), {std::numeric_limits<double>::quiet_NaN(), 0.0});
     start_.assign(bands_ + 1, 0);
     throughStart_.assign(bands_ + 1, 0);
     for (std::size_t i = 0; i < edges.size(); ++i) {
       for (std::size_t k = spans[i].first; k <= spans[i].second; ++k) {
         double x0, x1;
-        ++(through(edges[i], k, x0, x1) ? throughStart_ : start_)[k + 1];
+        const bool runs = through(edges[i], k, x0, x1);
+        if (runs) range[copyStart[i] + k - spans[i].first] = {x0, x1};
+        ++(runs ? throughStart_ : start_)[k + 1];
       }
     }
+    auto rangeOf = [&](std::size_t i, std::size_t k) { return range[copyStart[i] + k - spans[i].first]; };
     for (std::size_t k = 0; k < bands_; ++k) start_[k + 1] += start_[k], throughStart_[k + 1] += throughStart_[k];
     // The through edges, with their ranges in the band, ordered by the range's left end (a sort
     // of (left end, place) pairs per band, not of the 64-byte copies).
@@ -158,8 +169,8 @@ class EvenOddRegions {
       PooledVector<std::size_t> fill(throughStart_.begin(), throughStart_.end() - 1);
       for (std::size_t i = 0; i < edges.size(); ++i) {
         for (std::size_t k = spans[i].first; k <= spans[i].second; ++k) {
-          double x0, x1;
-          if (!through(edges[i], k, x0, x1)) continue;
+          const auto [x0, x1] = rangeOf(i, k);
+          if (std::isnan(x0)) continue;
           Edge e = edges[i];
           e.minX = x0, e.maxX = x1;
           keys[fill[k]] = {x0, static_cast<std::uint32_t>(fill[k])};
@@ -194,8 +205,7 @@ class EvenOddRegions {
       PooledVector<std::size_t> fill(start_.begin(), start_.end() - 1);
       for (const std::uint32_t i : order) {
         for (std::size_t k = spans[i].first; k <= spans[i].second; ++k) {
-          double x0, x1;
-          if (!through(edges[i], k, x0, x1)) into[fill[k]++] = edges[i];
+          if (std::isnan(rangeOf(i, k).first)) into[fill[k]++] = edges[i];
         }
       }
     };
