@@ -13,15 +13,21 @@ trap 'rm -rf "$TMP"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 CLUSTER="$SRC/experiments/cluster"
 M=3
+# slurmArray SCRIPT OUT CASES: the M array tasks of SCRIPT, one after the other, as Slurm starts
+# them, then its merge job.
+slurmArray() {
+  local script="$1" out="$2" cases="$3" k
+  for ((k = 1; k <= M; k++)); do
+    SLURM_ARRAY_TASK_ID=$k SLURM_ARRAY_TASK_COUNT=$M bash "$CLUSTER/$script" "$out" "$cases" >/dev/null 2>&1 ||
+      fail "$script, array task $k of $M"
+  done
+  bash "$CLUSTER/$script" "$out" "$cases" merge >/dev/null 2>&1 || fail "$script merge"
+}
 
 # The robustness study: 3 cases a class, the exact method alone (as GHCLIP_STUDY_ARGS passes it).
 export GHCLIP_STUDY_ARGS="--methods exact"
 "$GHCLIP_BIN/robustness" "$TMP/rob-one" --cases 3 --methods exact >/dev/null 2>&1
-for ((k = 1; k <= M; k++)); do
-  SLURM_ARRAY_TASK_ID=$k SLURM_ARRAY_TASK_COUNT=$M bash "$CLUSTER/robustness.slurm" "$TMP/rob-slurm" 3 >/dev/null 2>&1 ||
-    fail "robustness.slurm, array task $k of $M"
-done
-bash "$CLUSTER/robustness.slurm" "$TMP/rob-slurm" 3 merge >/dev/null 2>&1 || fail "robustness.slurm merge"
+slurmArray robustness.slurm "$TMP/rob-slurm" 3
 "$CLUSTER/robustness_parallel.sh" "$TMP/rob-parallel" 3 $M -j2 --will-cite >/dev/null 2>&1 || fail "robustness_parallel.sh"
 strip() { grep -v -e '^| made by' -e '^| date' -e 'The study took' "$1"; }
 for way in slurm parallel; do
@@ -35,11 +41,7 @@ unset GHCLIP_STUDY_ARGS
 
 # The degenerate-case study: 40 cases in all.
 "$GHCLIP_BIN/exact_degenerate" "$TMP/deg-one" 40 >/dev/null 2>&1
-for ((k = 1; k <= M; k++)); do
-  SLURM_ARRAY_TASK_ID=$k SLURM_ARRAY_TASK_COUNT=$M bash "$CLUSTER/exact_degenerate.slurm" "$TMP/deg-slurm" 40 >/dev/null 2>&1 ||
-    fail "exact_degenerate.slurm, array task $k of $M"
-done
-bash "$CLUSTER/exact_degenerate.slurm" "$TMP/deg-slurm" 40 merge >/dev/null 2>&1 || fail "exact_degenerate.slurm merge"
+slurmArray exact_degenerate.slurm "$TMP/deg-slurm" 40
 "$CLUSTER/exact_degenerate_parallel.sh" "$TMP/deg-parallel" 40 $M -j2 --will-cite >/dev/null 2>&1 || fail "exact_degenerate_parallel.sh"
 strip() { grep -v -e '^| made by' -e '^| date' "$1"; }
 for way in slurm parallel; do
