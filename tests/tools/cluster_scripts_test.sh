@@ -24,12 +24,14 @@ slurmArray() {
   bash "$CLUSTER/$script" "$out" "$cases" merge >/dev/null 2>&1 || fail "$script merge"
 }
 
+# A report without what differs from run to run: its command, date and duration.
+strip() { grep -v -e '^| made by' -e '^| date' -e 'The study took' "$1"; }
+
 # The robustness study: 3 cases a class, the exact method alone (as GHCLIP_STUDY_ARGS passes it).
 export GHCLIP_STUDY_ARGS="--methods exact"
 "$GHCLIP_BIN/robustness" "$TMP/rob-one" --cases 3 --methods exact >/dev/null 2>&1
 slurmArray robustness.slurm "$TMP/rob-slurm" 3
 "$CLUSTER/robustness_parallel.sh" "$TMP/rob-parallel" 3 $M -j2 --will-cite >/dev/null 2>&1 || fail "robustness_parallel.sh"
-strip() { grep -v -e '^| made by' -e '^| date' -e 'The study took' "$1"; }
 for way in slurm parallel; do
   [[ $(ls "$TMP/rob-$way"/robustness-shard-*-of-$M.json | wc -l) -eq $M ]] || fail "robustness, $way: not $M shards"
   diff <(strip "$TMP/rob-one/robustness.md") <(strip "$TMP/rob-$way/robustness.md") >&2 ||
@@ -43,7 +45,6 @@ unset GHCLIP_STUDY_ARGS
 "$GHCLIP_BIN/exact_degenerate" "$TMP/deg-one" 40 >/dev/null 2>&1
 slurmArray exact_degenerate.slurm "$TMP/deg-slurm" 40
 "$CLUSTER/exact_degenerate_parallel.sh" "$TMP/deg-parallel" 40 $M -j2 --will-cite >/dev/null 2>&1 || fail "exact_degenerate_parallel.sh"
-strip() { grep -v -e '^| made by' -e '^| date' "$1"; }
 for way in slurm parallel; do
   [[ $(ls "$TMP/deg-$way"/exact-degenerate-shard-*-of-$M.json | wc -l) -eq $M ]] || fail "degenerate, $way: not $M shards"
   diff <(strip "$TMP/deg-one/exact-degenerate.md") <(strip "$TMP/deg-$way/exact-degenerate.md") >&2 ||

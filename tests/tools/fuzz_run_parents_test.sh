@@ -11,7 +11,8 @@ RUN="$1/fuzz/run_parents.sh"
 TMP="$(mktemp -d)"
 cleanup() {
   # Whatever a failed case left running.
-  [[ -f "$TMP/pids" ]] && while read -r p; do kill -KILL "$p" 2>/dev/null || true; done <"$TMP/pids"
+  local p
+  if [[ -f "$TMP/pids" ]]; then for p in $(cat "$TMP/pids"); do kill -KILL "$p" 2>/dev/null || true; done; fi
   rm -rf "$TMP"
 }
 trap cleanup EXIT
