@@ -1,11 +1,13 @@
 // The body of fuzz_clip_<variant>: all five operations on a fuzzed pair; no crash, no hang, no
 // leak (sanitizers), finite output, the cheap invariants, and the sampling oracle agrees.
 // For the exact variant any disagreement traps; for naive and sweep it is recorded, and only
-// crashes and hangs stop the campaign.
+// crashes, hangs and non-finite output stop the campaign.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -27,10 +29,23 @@ inline ProblemKey clipProblem(const std::uint8_t* data, std::size_t size) {
   return problemKey(data, size, kClipRings, kClipVertices);
 }
 
-inline int clipTarget(const char* target, Variant variant, const std::uint8_t* data, std::size_t size) {
-  const Pair p = clipPair(data, size);
-  RecordedOperands operands(p.subject, p.clip);  // as its findings name them
-  const bool strict = variant == Variant::Exact;
+// What a clip target finds on one pair, every judge run: per operation, in the order found.
+struct ClipFinding {
+  Op op;
+  std::string what;        // as a trap or a record names it
+  bool trapsAlways = false;  // non-finite output: a trap for every variant, not only the exact one
+};
+struct ClipOutcome {
+  bool refused = false;  // InvalidInput: the right answer to bad input, nothing judged
+  std::vector<ClipFinding> findings;
+};
+
+// All five operations on a pair, each answer through the judges the targets run: a ClipFailure,
+// non-finite output, the cheap invariants, and the sampling oracle (the five answers at once).
+// The clip targets trap or record what this finds; tests/golden/judge_verdicts_test.cpp pins it
+// on committed inputs, so that a faster judge is shown to find the same.
+inline ClipOutcome clipAndJudge(const Pair& p, Variant variant) {
+  ClipOutcome outcome;
   oracle::SampleOptions so;
   so.uniformPoints = 200;
   so.stopWhenAllFail = true;  // only pass() is read below: the same verdicts
@@ -39,41 +54,34 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
   try {
     clipping.emplace(p.subject, p.clip, optionsOf(variant));
   } catch (const InvalidInput&) {
-    return 0;  // refused cleanly: the right answer to bad input
+    outcome.refused = true;
+    return outcome;
   } catch (const ClipFailure& e) {  // phase 1 gave up: clip() fails so for every operation
-    for (Op op : kAllOps) {
-      if (strict) trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
-      record(target, std::string("ClipFailure: ") + e.what(), operands, op, data, size);
-    }
-    return 0;
+    for (Op op : kAllOps) outcome.findings.push_back({op, std::string("ClipFailure: ") + e.what()});
+    return outcome;
   }
   std::vector<std::pair<Op, Region>> answers;
   for (Op op : kAllOps) {
     try {
       answers.emplace_back(op, clipping->result(op));
     } catch (const ClipFailure& e) {
-      if (strict) trap(std::string("ClipFailure: ") + e.what(), p.subject, p.clip, op);
-      record(target, std::string("ClipFailure: ") + e.what(), operands, op, data, size);
+      outcome.findings.push_back({op, std::string("ClipFailure: ") + e.what()});
       continue;
     }
-    for (const Ring& ring : answers.back().second) {
-      for (const Point& q : ring) {
-        if (!std::isfinite(q.x) || !std::isfinite(q.y)) trap("non-finite output", p.subject, p.clip, op);
-      }
-    }
+    const bool finite = std::all_of(answers.back().second.begin(), answers.back().second.end(), [](const Ring& ring) {
+      return std::all_of(ring.begin(), ring.end(), [](const Point& q) { return std::isfinite(q.x) && std::isfinite(q.y); });
+    });
+    if (!finite) outcome.findings.push_back({op, "non-finite output", true});
   }
-  if (answers.empty()) return 0;
+  if (answers.empty()) return outcome;
 #ifdef GHCLIP_FUZZ_UNJUDGED
-  return 0;  // the ceiling: what an execution costs before any judge (fuzz/CMakeLists.txt)
+  return outcome;  // the ceiling: what an execution costs before any judge (fuzz/CMakeLists.txt)
 #endif
   const JudgeHeap heap;  // the clips above ran outside it
   const oracle::InvariantJudge invariants(p.subject, p.clip);
   for (const auto& [op, r] : answers) {
     const auto violations = invariants.violations(op, r);
-    if (!violations.empty()) {
-      if (strict) trap("invariant: " + violations.front(), p.subject, p.clip, op);
-      record(target, "invariant: " + violations.front(), operands, op, data, size);
-    }
+    if (!violations.empty()) outcome.findings.push_back({op, "invariant: " + violations.front()});
   }
   // The five answers at once: each at every point a check of it alone would judge, or at one in
   // the same face, and at the points of the others (sampling_oracle.h).
@@ -81,9 +89,21 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
   for (const auto& [op, r] : answers) judged.emplace_back(op, &r);
   const auto verdicts = oracle::SamplingJudge(p.subject, p.clip, so).check(judged);
   for (std::size_t i = 0; i < answers.size(); ++i) {
-    if (verdicts[i].pass()) continue;
-    if (strict) trap("sampling oracle disagrees", p.subject, p.clip, answers[i].first);
-    record(target, "sampling oracle disagrees", operands, answers[i].first, data, size);
+    if (!verdicts[i].pass()) outcome.findings.push_back({answers[i].first, "sampling oracle disagrees"});
+  }
+  return outcome;
+}
+
+// The body of a clip target: for the exact variant every finding traps; for naive and sweep it
+// is recorded (fuzz/findings.h), and only crashes, hangs and non-finite output stop the campaign.
+inline int clipTarget(const char* target, Variant variant, const std::uint8_t* data, std::size_t size) {
+  const Pair p = clipPair(data, size);
+  const ClipOutcome outcome = clipAndJudge(p, variant);
+  if (outcome.findings.empty()) return 0;
+  RecordedOperands operands(p.subject, p.clip);  // as its findings name them
+  for (const ClipFinding& f : outcome.findings) {
+    if (variant == Variant::Exact || f.trapsAlways) trap(f.what, p.subject, p.clip, f.op);
+    record(target, f.what, operands, f.op, data, size);
   }
   return 0;
 }

@@ -1,0 +1,183 @@
+// Pins what the clip targets' judges find (fuzz/clip_target.h: clipAndJudge) on committed fuzz
+// inputs, for every variant: a judge made faster must find the same on each of them ("no check
+// weakened", issue 19), and one that finds more or less says so in this file's diff.
+//   judge_verdicts_tests --write FILE [DIR...]   writes the pins as this code computes them, for
+//       the inputs already pinned, every seed and regression input of the clip targets, and the
+//       fuzz inputs in each DIR (a grown corpus), each input once.
+// Each line: the input in hex, then per variant (naive, sweep, exact) the five operations'
+// findings in kAllOps order, "." for none, else a letter per finding in the order found:
+// F ClipFailure, N non-finite output, I an invariant violated, S the sampling oracle disagrees;
+// "refused" when the input is invalid (InvalidInput).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "clip_target.h"
+
+namespace gh::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+using Bytes = std::vector<std::uint8_t>;
+
+constexpr Variant kVariants[] = {Variant::Naive, Variant::Sweep, Variant::Exact};
+const char* const kTargets[] = {"fuzz_clip_naive", "fuzz_clip_sweep", "fuzz_clip_exact"};
+
+std::string hexOf(const Bytes& bytes) {
+  static const char digits[] = "0123456789abcdef";
+  std::string out;
+  for (std::uint8_t b : bytes) out += digits[b >> 4], out += digits[b & 15];
+  return out;
+}
+
+Bytes bytesOf(const std::string& hex) {
+  auto value = [](char c) { return c <= '9' ? c - '0' : c - 'a' + 10; };
+  Bytes out;
+  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) out.push_back(static_cast<std::uint8_t>(value(hex[i]) * 16 + value(hex[i + 1])));
+  return out;
+}
+
+// The findings of one variant on one input, as pinned.
+std::string verdictOf(const Bytes& input, Variant variant) {
+  const ClipOutcome outcome = clipAndJudge(clipPair(input.data(), input.size()), variant);
+  if (outcome.refused) return "refused";
+  std::string out;
+  for (Op op : kAllOps) {
+    std::string letters;
+    for (const ClipFinding& f : outcome.findings) {
+      if (f.op != op) continue;
+      if (f.what.rfind("ClipFailure", 0) == 0) letters += 'F';
+      else if (f.what == "non-finite output") letters += 'N';
+      else if (f.what.rfind("invariant", 0) == 0) letters += 'I';
+      else letters += 'S';
+    }
+    if (!out.empty()) out += ',';
+    out += letters.empty() ? "." : letters;
+  }
+  return out;
+}
+
+std::string verdictsOf(const Bytes& input) {
+  std::string out;
+  for (Variant v : kVariants) out += " | " + verdictOf(input, v);
+  return out;
+}
+
+struct Pin {
+  std::string hex, verdicts;  // verdicts: " | naive | sweep | exact"
+};
+
+std::vector<Pin> readPins() {
+  std::ifstream in(GHCLIP_JUDGE_VERDICTS_FILE);
+  std::vector<Pin> pins;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::size_t bar = line.find(" | ");
+    pins.push_back({line.substr(0, bar), bar == std::string::npos ? "" : line.substr(bar)});
+  }
+  return pins;
+}
+
+Bytes readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return Bytes(std::istreambuf_iterator<char>(in), {});
+}
+
+// Every seed and regression input of the clip targets, in a fixed order.
+std::vector<Bytes> committedInputs() {
+  std::vector<fs::path> files;
+  for (const char* target : kTargets) {
+    for (const fs::path& dir : {fs::path(GHCLIP_SOURCE_DIR) / "fuzz" / (std::string(target) + "_seed_corpus"),
+                                fs::path(GHCLIP_SOURCE_DIR) / "tests" / "regressions" / "fuzz" / target}) {
+      if (!fs::is_directory(dir)) continue;
+      for (const auto& entry : fs::directory_iterator(dir)) files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<Bytes> inputs;
+  for (const fs::path& f : files) inputs.push_back(readFile(f));
+  return inputs;
+}
+
+TEST(JudgeVerdicts, EverySeedAndRegressionInputIsPinned) {
+  std::set<std::string> pinned;
+  for (const Pin& pin : readPins()) pinned.insert(pin.hex);
+  const std::vector<Bytes> inputs = committedInputs();
+  ASSERT_FALSE(inputs.empty());
+  for (const Bytes& input : inputs) {
+    EXPECT_TRUE(pinned.count(hexOf(input))) << "a seed or regression input of a clip target is not pinned in "
+                                            << GHCLIP_JUDGE_VERDICTS_FILE << " (judge_verdicts_tests --write): "
+                                            << hexOf(input).substr(0, 64);
+  }
+}
+
+TEST(JudgeVerdicts, EachVariantFindsWhatIsPinned) {
+  const std::vector<Pin> pins = readPins();
+  ASSERT_GE(pins.size(), 1000u) << "pins at " << GHCLIP_JUDGE_VERDICTS_FILE;
+  std::size_t differ = 0, findings = 0;
+  for (const Pin& pin : pins) {
+    const std::string now = verdictsOf(bytesOf(pin.hex));
+    findings += static_cast<std::size_t>(std::count_if(now.begin(), now.end(), [](char c) { return c >= 'A' && c <= 'Z'; }));
+    if (now == pin.verdicts) continue;
+    if (++differ <= 10) {
+      ADD_FAILURE() << "input " << pin.hex.substr(0, 48) << "...: pinned" << pin.verdicts << ", found now" << now;
+    }
+  }
+  EXPECT_EQ(differ, 0u) << "of " << pins.size() << " inputs";
+  // The pins are worth something only if the naive and sweep variants' answers fail on many of
+  // them: a judge that found nothing would differ there.
+  EXPECT_GE(findings, pins.size()) << "findings over all inputs and variants";
+}
+
+int write(const std::string& file, const std::vector<std::string>& dirs) {
+  std::vector<std::string> order;
+  std::set<std::string> seen;
+  auto add = [&](const Bytes& input) {
+    const std::string hex = hexOf(input);
+    if (seen.insert(hex).second) order.push_back(hex);
+  };
+  for (const Pin& pin : readPins()) add(bytesOf(pin.hex));
+  for (const Bytes& input : committedInputs()) add(input);
+  for (const std::string& dir : dirs) {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(dir)) files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& f : files) add(readFile(f));
+  }
+  const std::string partial = file + ".partial";  // renamed over file once whole
+  std::ofstream out(partial);
+  out << "# Pins of tests/golden/judge_verdicts_test.cpp (what each line means: its first comment).\n"
+         "# <input in hex> | <naive> | <sweep> | <exact>, each the five operations' findings in kAllOps order.\n"
+         "# Inputs: the clip targets' seeds and regressions, and corpora grown by the targets (the commits\n"
+         "# that added them say which). Written by judge_verdicts_tests --write; never edited by hand.\n";
+  for (const std::string& hex : order) out << hex << verdictsOf(bytesOf(hex)) << '\n';
+  out.close();
+  std::error_code renamed;
+  if (out) fs::rename(partial, file, renamed);
+  if (!out || renamed) {
+    std::cerr << "judge_verdicts_tests: cannot write " << file << '\n';
+    fs::remove(partial, renamed);
+    return 2;
+  }
+  std::cout << order.size() << " inputs pinned in " << file << '\n';
+  return 0;
+}
+
+}  // namespace
+}  // namespace gh::fuzz
+
+int main(int argc, char** argv) {
+  if (argc >= 3 && std::string(argv[1]) == "--write") {
+    return gh::fuzz::write(argv[2], std::vector<std::string>(argv + 3, argv + argc));
+  }
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
