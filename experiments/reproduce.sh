@@ -83,6 +83,9 @@ step "what exactness costs: exact vs naive on the paper's workload -> results/ex
 step "I/O speed against GEOS's readers and writers, 10^6 vertices -> results/io.md (about a minute)"
 "$BIN/io_speed" results/io.md >results/io-speed.log 2>&1 || { tail -20 results/io-speed.log; exit 1; }
 
+step "the clip fuzz targets' clip against their judges, on the pinned fuzz inputs -> results/judge-cost.md (about a minute)"
+"$BIN/judge_cost" results/judge-cost.md >results/judge-cost.log 2>&1 || { tail -20 results/judge-cost.log; exit 1; }
+
 step "peak memory of a clip per crossing -> results/memory.md (under a minute)"
 "$BIN/clip_memory" results/memory.md
 

@@ -44,11 +44,17 @@ struct ClipOutcome {
 // non-finite output, the cheap invariants, and the sampling oracle (the five answers at once).
 // The clip targets trap or record what this finds; tests/golden/judge_verdicts_test.cpp pins it
 // on committed inputs, so that a faster judge is shown to find the same.
-inline ClipOutcome clipAndJudge(const Pair& p, Variant variant) {
-  ClipOutcome outcome;
+// The sampling oracle as the clip targets run it (experiments/judge_cost.cpp times it so too).
+inline oracle::SampleOptions clipTargetSampling() {
   oracle::SampleOptions so;
   so.uniformPoints = 200;
-  so.stopWhenAllFail = true;  // only pass() is read below: the same verdicts
+  so.stopWhenAllFail = true;  // only pass() is read: the same verdicts
+  return so;
+}
+
+inline ClipOutcome clipAndJudge(const Pair& p, Variant variant) {
+  ClipOutcome outcome;
+  const oracle::SampleOptions so = clipTargetSampling();
   // Phases 1 and 2 once for the five operations (clipping.h: each answer is clip()'s, bit for bit).
   std::optional<Clipping> clipping;
   try {

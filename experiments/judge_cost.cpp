@@ -1,0 +1,206 @@
+// Where a clip fuzz target's execution goes: the clip (the five operations) against its judges
+// (the invariants and the sampling oracle, as fuzz/clip_target.h runs them), timed side by side
+// in one run on the fuzz inputs pinned by tests/golden/judge_verdicts.golden (seeds, regressions
+// and grown corpora of the clip targets), in a release build without sanitizers. Each timed
+// iteration runs one stage over every input that is not refused; repetitions interleaved in
+// random order; medians. The fuzz targets' exec/s (./harness fuzz) also pays ASan and UBSan on
+// the clip, libFuzzer and fork mode: this says how the work itself divides, which a faster judge
+// must change (issue 19 asks the clip targets for 1,000 executions a second).
+//   judge_cost OUT.md [google benchmark flags]
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "clip_target.h"
+#include "common/bench_json.h"
+#include "common/provenance.h"
+#include "ghio/formats.h"
+#include "tool_main.h"
+
+using namespace gh;
+using namespace gh::experiments;
+
+namespace {
+
+constexpr int kRepetitions = 9;
+
+struct Variant_ {
+  const char* name;
+  Variant variant;
+};
+const Variant_ kVariants[] = {{"naive", Variant::Naive}, {"exact", Variant::Exact}};
+
+// A pinned input with its answers (computed once, for the judges' stages).
+struct Execution {
+  fuzz::Pair pair;
+  std::vector<std::pair<Op, Region>> answers;
+};
+
+std::vector<std::uint8_t> bytesOf(const std::string& hex) {
+  auto value = [](char c) { return c <= '9' ? c - '0' : c - 'a' + 10; };
+  std::vector<std::uint8_t> out;
+  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) out.push_back(static_cast<std::uint8_t>(value(hex[i]) * 16 + value(hex[i + 1])));
+  return out;
+}
+
+// The pinned inputs a variant does not refuse, with its five answers (those it gives).
+std::vector<Execution> executions(Variant variant) {
+  std::ifstream in(GHCLIP_JUDGE_VERDICTS_FILE);
+  if (!in) throw tools::BadInput(std::string("cannot read ") + GHCLIP_JUDGE_VERDICTS_FILE);
+  std::vector<Execution> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    const auto bytes = bytesOf(line.substr(0, line.find(' ')));
+    Execution e{fuzz::clipPair(bytes.data(), bytes.size()), {}};
+    try {
+      Clipping clipping(e.pair.subject, e.pair.clip, optionsOf(variant));
+      for (Op op : kAllOps) {
+        try {
+          e.answers.emplace_back(op, clipping.result(op));
+        } catch (const ClipFailure&) {
+        }
+      }
+    } catch (const InvalidInput&) {
+      continue;
+    } catch (const ClipFailure&) {
+    }
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+const std::vector<Execution>& executionsOf(Variant variant) {
+  static std::optional<std::vector<Execution>> cached[3];
+  auto& slot = cached[static_cast<int>(variant)];
+  if (!slot) slot = executions(variant);
+  return *slot;
+}
+
+void clipStage(benchmark::State& s, Variant variant) {
+  const auto& all = executionsOf(variant);
+  for (auto _ : s) {
+    for (const Execution& e : all) {
+      try {
+        Clipping clipping(e.pair.subject, e.pair.clip, optionsOf(variant));
+        for (Op op : kAllOps) {
+          try {
+            benchmark::DoNotOptimize(clipping.result(op));
+          } catch (const ClipFailure&) {
+          }
+        }
+      } catch (const ClipFailure&) {
+      }
+    }
+  }
+  s.counters["executions"] = static_cast<double>(all.size());
+}
+
+void invariantsStage(benchmark::State& s, Variant variant) {
+  const auto& all = executionsOf(variant);
+  for (auto _ : s) {
+    for (const Execution& e : all) {
+      if (e.answers.empty()) continue;
+      const oracle::InvariantJudge invariants(e.pair.subject, e.pair.clip);
+      for (const auto& [op, r] : e.answers) benchmark::DoNotOptimize(invariants.violations(op, r));
+    }
+  }
+  s.counters["executions"] = static_cast<double>(all.size());
+}
+
+void samplingStage(benchmark::State& s, Variant variant) {
+  const auto& all = executionsOf(variant);
+  double points = 0, failed = 0;
+  for (auto _ : s) {
+    points = failed = 0;
+    for (const Execution& e : all) {
+      if (e.answers.empty()) continue;
+      std::vector<std::pair<Op, const Region*>> judged;
+      for (const auto& [op, r] : e.answers) judged.emplace_back(op, &r);
+      for (const oracle::SampleVerdict& v : oracle::SamplingJudge(e.pair.subject, e.pair.clip, fuzz::clipTargetSampling()).check(judged)) {
+        points += static_cast<double>(v.checked + v.skipped);
+        failed += !v.pass();
+      }
+    }
+  }
+  s.counters["executions"] = static_cast<double>(all.size());
+  s.counters["points_per_answer"] = points / (5.0 * static_cast<double>(all.size()));
+  s.counters["answers_failed"] = failed;
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]).rfind("--", 0) == 0) {
+    return tools::usageError("judge_cost", "usage: judge_cost OUT.md [google benchmark flags]");
+  }
+  const std::string out = argv[1];
+  const std::string json = std::filesystem::path(out).replace_extension(".json").string();
+  const struct {
+    const char* name;
+    void (*stage)(benchmark::State&, Variant);
+  } stages[] = {{"clip", clipStage}, {"invariants", invariantsStage}, {"sampling", samplingStage}};
+  for (const Variant_& v : kVariants) {
+    for (const auto& st : stages) {
+      benchmark::RegisterBenchmark((std::string(v.name) + "/" + st.name).c_str(),
+                                   [v, st](benchmark::State& s) { st.stage(s, v.variant); })
+          ->Arg(1)->Iterations(1)->Repetitions(kRepetitions)->Unit(benchmark::kMillisecond);
+    }
+  }
+  std::vector<char*> args{argv[0]};
+  bool listing = false;
+  for (int i = 2; i < argc; ++i) {
+    args.push_back(argv[i]);
+    listing = listing || std::string(argv[i]).rfind("--benchmark_list_tests", 0) == 0;
+  }
+  std::string interleave = "--benchmark_enable_random_interleaving=true",
+              outFlag = "--benchmark_out=" + json, formatFlag = "--benchmark_out_format=json";
+  for (std::string* flag : {&interleave, &outFlag, &formatFlag}) args.push_back(flag->data());
+  int n = static_cast<int>(args.size());
+  benchmark::Initialize(&n, args.data());
+  const std::size_t ran = benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  if (listing) return 0;
+  if (ran == 0) throw tools::BadInput("no benchmark matched the --benchmark_filter given");
+  const BenchFile f = readBenchJson(json);
+
+  std::ostringstream md;
+  md << "# Where a clip fuzz target's execution goes: the clip against its judges\n\n"
+     << markdown(provenance(argc, argv)) << "\n"
+     << "The fuzz inputs pinned by `tests/golden/judge_verdicts.golden` (the clip targets' seeds, "
+        "regressions and grown corpora), those the variant does not refuse; per execution, the five "
+        "operations clipped (`Clipping`, as the targets do), the invariants on the five answers, and "
+        "the sampling oracle on the five at once with the targets' options (200 uniform points, "
+        "stop when every answer has failed: `fuzz/clip_target.h`). Release build, no sanitizers; "
+        "each timed iteration runs one stage over every input; "
+     << kRepetitions
+     << " repetitions, interleaved in random order; medians [min-max] in µs per execution. A fuzz "
+        "target's executions also pay ASan and UBSan on the clip, libFuzzer and fork mode "
+        "(`./harness fuzz` reports what they reach).\n\n"
+     << "| variant | executions | clip µs | invariants µs | sampling oracle µs | judges / clip | "
+        "points per answer | answers failed |\n|---|---|---|---|---|---|---|---|\n";
+  for (const Variant_& v : kVariants) {
+    const BenchRow* clip = findRow(f, std::string(v.name) + "/clip", 1);
+    const BenchRow* inv = findRow(f, std::string(v.name) + "/invariants", 1);
+    const BenchRow* smp = findRow(f, std::string(v.name) + "/sampling", 1);
+    const double executions = counterOf(clip, "executions");
+    const double perExecution = executions > 0 ? 1000 / executions : 0;  // ms per iteration -> µs per execution
+    auto cell = [&](const BenchRow* r) { return r && executions > 0 ? timeRange(*r, perExecution) : std::string("–"); };
+    md << "| " << v.name << " | " << reportNumber(executions) << " | " << cell(clip) << " | " << cell(inv) << " | "
+       << cell(smp) << " | "
+       << (clip && inv && smp ? reportNumber((inv->medianMs + smp->medianMs) / clip->medianMs) : "–") << " | "
+       << reportNumber(counterOf(smp, "points_per_answer")) << " | " << reportNumber(counterOf(smp, "answers_failed"))
+       << " |\n";
+  }
+  io::writeText(out, md.str());
+  std::cout << "wrote " << out << "\n";
+  return 0;
+}
+
+int main(int argc, char** argv) { return tools::guardedMain("judge_cost", argc, argv, run); }
