@@ -14,12 +14,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "common/bench_json.h"
+#include "common/bench_run.h"
 #include "common/bench_methods.h"
 #include "common/provenance.h"
 #include "predicates/construction.h"
@@ -145,22 +147,9 @@ int run(int argc, char** argv) {
         });
     b->Arg(kCrossings)->Unit(benchmark::kMicrosecond)->MinTime(0.2)->Repetitions(kRepetitions);
   }
-  std::vector<char*> args{argv[0]};
-  bool listing = false;
-  for (int i = 2; i < argc; ++i) {
-    args.push_back(argv[i]);
-    listing = listing || std::string(argv[i]).rfind("--benchmark_list_tests", 0) == 0;
-  }
-  std::string interleave = "--benchmark_enable_random_interleaving=true",
-              outFlag = "--benchmark_out=" + json, formatFlag = "--benchmark_out_format=json";
-  for (std::string* flag : {&interleave, &outFlag, &formatFlag}) args.push_back(flag->data());
-  int n = static_cast<int>(args.size());
-  benchmark::Initialize(&n, args.data());
-  const std::size_t ran = benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  if (listing) return 0;
-  if (ran == 0) throw tools::BadInput("no benchmark matched the --benchmark_filter given");
-  const BenchFile f = readBenchJson(json);
+  const std::optional<BenchFile> ran = runInterleaved(argc, argv, 2, json);
+  if (!ran) return 0;  // listed only
+  const BenchFile& f = *ran;
 
   std::ostringstream md;
   md << "# What exactness costs: exact against naive on the paper's random workload\n\n"

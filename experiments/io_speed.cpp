@@ -9,10 +9,12 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "common/bench_json.h"
+#include "common/bench_run.h"
 #include "common/provenance.h"
 #include "ghclip/clip.h"
 #include "ghio/formats.h"
@@ -148,16 +150,9 @@ int run(int argc, char** argv) {
   const std::string json = std::filesystem::path(out).replace_extension(".json").string();
   registerAll();
   texts();  // generated and clipped before any timing
-  std::vector<char*> args{argv[0]};
-  for (int i = 2; i < argc; ++i) args.push_back(argv[i]);
-  std::string interleave = "--benchmark_enable_random_interleaving=true", outFlag = "--benchmark_out=" + json,
-              formatFlag = "--benchmark_out_format=json";
-  for (std::string* flag : {&interleave, &outFlag, &formatFlag}) args.push_back(flag->data());
-  int n = static_cast<int>(args.size());
-  benchmark::Initialize(&n, args.data());
-  if (benchmark::RunSpecifiedBenchmarks() == 0) throw tools::BadInput("no benchmark matched the --benchmark_filter given");
-  benchmark::Shutdown();
-  const BenchFile f = readBenchJson(json);
+  const std::optional<BenchFile> ran = runInterleaved(argc, argv, 2, json);
+  if (!ran) return 0;  // listed only
+  const BenchFile& f = *ran;
   auto mbPerSecond = [&](const std::string& name, std::size_t size) -> double {
     const BenchRow* r = findRow(f, name, static_cast<long>(kVertices));
     return r ? static_cast<double>(size) / 1e6 / (r->medianMs / 1000) : 0;

@@ -10,7 +10,6 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -18,7 +17,9 @@
 #include <vector>
 
 #include "clip_target.h"
+#include "judge_pins.h"
 #include "common/bench_json.h"
+#include "common/bench_run.h"
 #include "common/provenance.h"
 #include "ghio/formats.h"
 #include "tool_main.h"
@@ -42,22 +43,13 @@ struct Execution {
   std::vector<std::pair<Op, Region>> answers;
 };
 
-std::vector<std::uint8_t> bytesOf(const std::string& hex) {
-  auto value = [](char c) { return c <= '9' ? c - '0' : c - 'a' + 10; };
-  std::vector<std::uint8_t> out;
-  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) out.push_back(static_cast<std::uint8_t>(value(hex[i]) * 16 + value(hex[i + 1])));
-  return out;
-}
-
 // The pinned inputs a variant does not refuse, with its five answers (those it gives).
 std::vector<Execution> executions(Variant variant) {
-  std::ifstream in(GHCLIP_JUDGE_VERDICTS_FILE);
-  if (!in) throw tools::BadInput(std::string("cannot read ") + GHCLIP_JUDGE_VERDICTS_FILE);
+  const std::vector<fuzz::JudgePin> pins = fuzz::readJudgePins(GHCLIP_JUDGE_VERDICTS_FILE);
+  if (pins.empty()) throw tools::BadInput(std::string("no pinned inputs in ") + GHCLIP_JUDGE_VERDICTS_FILE);
   std::vector<Execution> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    const auto bytes = bytesOf(line.substr(0, line.find(' ')));
+  for (const fuzz::JudgePin& pin : pins) {
+    const auto bytes = fuzz::bytesOfHex(pin.hex);
     Execution e{fuzz::clipPair(bytes.data(), bytes.size()), {}};
     try {
       Clipping clipping(e.pair.subject, e.pair.clip, optionsOf(variant));
@@ -153,22 +145,9 @@ int run(int argc, char** argv) {
           ->Arg(1)->Iterations(1)->Repetitions(kRepetitions)->Unit(benchmark::kMillisecond);
     }
   }
-  std::vector<char*> args{argv[0]};
-  bool listing = false;
-  for (int i = 2; i < argc; ++i) {
-    args.push_back(argv[i]);
-    listing = listing || std::string(argv[i]).rfind("--benchmark_list_tests", 0) == 0;
-  }
-  std::string interleave = "--benchmark_enable_random_interleaving=true",
-              outFlag = "--benchmark_out=" + json, formatFlag = "--benchmark_out_format=json";
-  for (std::string* flag : {&interleave, &outFlag, &formatFlag}) args.push_back(flag->data());
-  int n = static_cast<int>(args.size());
-  benchmark::Initialize(&n, args.data());
-  const std::size_t ran = benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  if (listing) return 0;
-  if (ran == 0) throw tools::BadInput("no benchmark matched the --benchmark_filter given");
-  const BenchFile f = readBenchJson(json);
+  const std::optional<BenchFile> ran = runInterleaved(argc, argv, 2, json);
+  if (!ran) return 0;  // listed only
+  const BenchFile& f = *ran;
 
   std::ostringstream md;
   md << "# Where a clip fuzz target's execution goes: the clip against its judges\n\n"
@@ -195,8 +174,8 @@ int run(int argc, char** argv) {
     md << "| " << v.name << " | " << reportNumber(executions) << " | " << cell(clip) << " | " << cell(inv) << " | "
        << cell(smp) << " | "
        << (clip && inv && smp ? reportNumber((inv->medianMs + smp->medianMs) / clip->medianMs) : "–") << " | "
-       << reportNumber(counterOf(smp, "points_per_answer")) << " | " << reportNumber(counterOf(smp, "answers_failed"))
-       << " |\n";
+       << (smp ? reportNumber(counterOf(smp, "points_per_answer")) : "–") << " | "
+       << (smp ? reportNumber(counterOf(smp, "answers_failed")) : "–") << " |\n";
   }
   io::writeText(out, md.str());
   std::cout << "wrote " << out << "\n";

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "clip_target.h"
+#include "judge_pins.h"
 
 namespace gh::fuzz {
 namespace {
@@ -29,20 +30,6 @@ using Bytes = std::vector<std::uint8_t>;
 
 constexpr Variant kVariants[] = {Variant::Naive, Variant::Sweep, Variant::Exact};
 const char* const kTargets[] = {"fuzz_clip_naive", "fuzz_clip_sweep", "fuzz_clip_exact"};
-
-std::string hexOf(const Bytes& bytes) {
-  static const char digits[] = "0123456789abcdef";
-  std::string out;
-  for (std::uint8_t b : bytes) out += digits[b >> 4], out += digits[b & 15];
-  return out;
-}
-
-Bytes bytesOf(const std::string& hex) {
-  auto value = [](char c) { return c <= '9' ? c - '0' : c - 'a' + 10; };
-  Bytes out;
-  for (std::size_t i = 0; i + 1 < hex.size(); i += 2) out.push_back(static_cast<std::uint8_t>(value(hex[i]) * 16 + value(hex[i + 1])));
-  return out;
-}
 
 // The findings of one variant on one input, as pinned.
 std::string verdictOf(const Bytes& input, Variant variant) {
@@ -70,21 +57,7 @@ std::string verdictsOf(const Bytes& input) {
   return out;
 }
 
-struct Pin {
-  std::string hex, verdicts;  // verdicts: " | naive | sweep | exact"
-};
-
-std::vector<Pin> readPins() {
-  std::ifstream in(GHCLIP_JUDGE_VERDICTS_FILE);
-  std::vector<Pin> pins;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::size_t bar = line.find(" | ");
-    pins.push_back({line.substr(0, bar), bar == std::string::npos ? "" : line.substr(bar)});
-  }
-  return pins;
-}
+std::vector<JudgePin> readPins() { return readJudgePins(GHCLIP_JUDGE_VERDICTS_FILE); }
 
 Bytes readFile(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -109,7 +82,7 @@ std::vector<Bytes> committedInputs() {
 
 TEST(JudgeVerdicts, EverySeedAndRegressionInputIsPinned) {
   std::set<std::string> pinned;
-  for (const Pin& pin : readPins()) pinned.insert(pin.hex);
+  for (const JudgePin& pin : readPins()) pinned.insert(pin.hex);
   const std::vector<Bytes> inputs = committedInputs();
   ASSERT_FALSE(inputs.empty());
   for (const Bytes& input : inputs) {
@@ -120,11 +93,11 @@ TEST(JudgeVerdicts, EverySeedAndRegressionInputIsPinned) {
 }
 
 TEST(JudgeVerdicts, EachVariantFindsWhatIsPinned) {
-  const std::vector<Pin> pins = readPins();
+  const std::vector<JudgePin> pins = readPins();
   ASSERT_GE(pins.size(), 1000u) << "pins at " << GHCLIP_JUDGE_VERDICTS_FILE;
   std::size_t differ = 0, findings = 0;
-  for (const Pin& pin : pins) {
-    const std::string now = verdictsOf(bytesOf(pin.hex));
+  for (const JudgePin& pin : pins) {
+    const std::string now = verdictsOf(bytesOfHex(pin.hex));
     findings += static_cast<std::size_t>(std::count_if(now.begin(), now.end(), [](char c) { return c >= 'A' && c <= 'Z'; }));
     if (now == pin.verdicts) continue;
     if (++differ <= 10) {
@@ -144,7 +117,7 @@ int write(const std::string& file, const std::vector<std::string>& dirs) {
     const std::string hex = hexOf(input);
     if (seen.insert(hex).second) order.push_back(hex);
   };
-  for (const Pin& pin : readPins()) add(bytesOf(pin.hex));
+  for (const JudgePin& pin : readPins()) add(bytesOfHex(pin.hex));
   for (const Bytes& input : committedInputs()) add(input);
   for (const std::string& dir : dirs) {
     std::vector<fs::path> files;
@@ -158,7 +131,7 @@ int write(const std::string& file, const std::vector<std::string>& dirs) {
          "# <input in hex> | <naive> | <sweep> | <exact>, each the five operations' findings in kAllOps order.\n"
          "# Inputs: the clip targets' seeds and regressions, and corpora grown by the targets (the commits\n"
          "# that added them say which). Written by judge_verdicts_tests --write; never edited by hand.\n";
-  for (const std::string& hex : order) out << hex << verdictsOf(bytesOf(hex)) << '\n';
+  for (const std::string& hex : order) out << hex << verdictsOf(bytesOfHex(hex)) << '\n';
   out.close();
   std::error_code renamed;
   if (out) fs::rename(partial, file, renamed);
