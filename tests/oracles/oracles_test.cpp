@@ -713,6 +713,30 @@ TEST(SamplingOracle, EveryRadiusOfACornerKeepsItsBisector) {
   }
 }
 
+// What the uniform points are for: a wrong face that no vertex of S, C or the answer bounds. S is
+// two horizontal bars, C two vertical ones; their intersection is four squares whose corners are
+// all crossings, and an answer that leaves one square out has no vertex near it (the nearest lie
+// 2 away, past every radius sampled around them). Points near vertices alone pass that answer; the
+// uniform points, as many as the clip fuzz targets draw, find it (the square is 9 % of the box).
+TEST(SamplingOracle, UniformPointsFindAWrongFaceNoVertexBounds) {
+  const Region s = io::readWkt("MULTIPOLYGON(((0 1,10 1,10 4,0 4,0 1)),((0 6,10 6,10 9,0 9,0 6)))");
+  const Region c = io::readWkt("MULTIPOLYGON(((1 0,4 0,4 10,1 10,1 0)),((6 0,9 0,9 10,6 10,6 0)))");
+  ASSERT_DOUBLE_EQ(evenOddArea(clip(s, c, Op::Intersection)), 36);
+  const Region threeSquares = io::readWkt(
+      "MULTIPOLYGON(((1 1,4 1,4 4,1 4,1 1)),((6 1,9 1,9 4,6 4,6 1)),((1 6,4 6,4 9,1 9,1 6)))");
+  oracle::SampleOptions nearOnly;
+  nearOnly.uniformPoints = 0;
+  EXPECT_TRUE(oracle::sampleCheck(s, c, Op::Intersection, threeSquares, nearOnly).pass());
+  oracle::SampleOptions targets;
+  targets.uniformPoints = 200;  // as the clip fuzz targets judge (fuzz/clip_target.h)
+  const oracle::SampleVerdict v = oracle::sampleCheck(s, c, Op::Intersection, threeSquares, targets);
+  EXPECT_FALSE(v.pass());
+  ASSERT_TRUE(v.firstMismatch.has_value());
+  EXPECT_GT(v.firstMismatch->x, 6);
+  EXPECT_GT(v.firstMismatch->y, 6);
+  EXPECT_TRUE(oracle::sampleCheck(s, c, Op::Intersection, clip(s, c, Op::Intersection), targets).pass());
+}
+
 // The fuzz targets' judge stops once every answer has a mismatch (stopWhenAllFail): the answers'
 // verdicts and first mismatches stay the full check's, one found only near a vertex (the notched
 // union below) beside one found among the first uniform points included; and it does stop.
