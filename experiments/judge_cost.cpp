@@ -51,18 +51,9 @@ std::vector<Execution> executions(Variant variant) {
   for (const fuzz::JudgePin& pin : pins) {
     const auto bytes = fuzz::bytesOfHex(pin.hex);
     Execution e{fuzz::clipPair(bytes.data(), bytes.size()), {}};
-    try {
-      Clipping clipping(e.pair.subject, e.pair.clip, optionsOf(variant));
-      for (Op op : kAllOps) {
-        try {
-          e.answers.emplace_back(op, clipping.result(op));
-        } catch (const ClipFailure&) {
-        }
-      }
-    } catch (const InvalidInput&) {
-      continue;
-    } catch (const ClipFailure&) {
-    }
+    fuzz::ClipOutcome outcome;
+    e.answers = fuzz::clipFive(e.pair, variant, outcome);
+    if (outcome.refused) continue;
     out.push_back(std::move(e));
   }
   return out;
@@ -79,16 +70,8 @@ void clipStage(benchmark::State& s, Variant variant) {
   const auto& all = executionsOf(variant);
   for (auto _ : s) {
     for (const Execution& e : all) {
-      try {
-        Clipping clipping(e.pair.subject, e.pair.clip, optionsOf(variant));
-        for (Op op : kAllOps) {
-          try {
-            benchmark::DoNotOptimize(clipping.result(op));
-          } catch (const ClipFailure&) {
-          }
-        }
-      } catch (const ClipFailure&) {
-      }
+      fuzz::ClipOutcome outcome;
+      benchmark::DoNotOptimize(fuzz::clipFive(e.pair, variant, outcome));
     }
   }
   s.counters["executions"] = static_cast<double>(all.size());

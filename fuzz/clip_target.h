@@ -31,19 +31,18 @@ inline ProblemKey clipProblem(const std::uint8_t* data, std::size_t size) {
 
 // What a clip target finds on one pair, every judge run: per operation, in the order found.
 struct ClipFinding {
+  enum class Kind { ClipFailure, NonFinite, Invariant, Sampling };
   Op op;
-  std::string what;        // as a trap or a record names it
-  bool trapsAlways = false;  // non-finite output: a trap for every variant, not only the exact one
+  Kind kind;
+  std::string what;  // as a trap or a record names it
+  // Non-finite output traps for every variant, not only the exact one.
+  bool trapsAlways() const { return kind == Kind::NonFinite; }
 };
 struct ClipOutcome {
   bool refused = false;  // InvalidInput: the right answer to bad input, nothing judged
   std::vector<ClipFinding> findings;
 };
 
-// All five operations on a pair, each answer through the judges the targets run: a ClipFailure,
-// non-finite output, the cheap invariants, and the sampling oracle (the five answers at once).
-// The clip targets trap or record what this finds; tests/golden/judge_verdicts_test.cpp pins it
-// on committed inputs, so that a faster judge is shown to find the same.
 // The sampling oracle as the clip targets run it (experiments/judge_cost.cpp times it so too).
 inline oracle::SampleOptions clipTargetSampling() {
   oracle::SampleOptions so;
@@ -52,33 +51,45 @@ inline oracle::SampleOptions clipTargetSampling() {
   return so;
 }
 
-inline ClipOutcome clipAndJudge(const Pair& p, Variant variant) {
-  ClipOutcome outcome;
-  const oracle::SampleOptions so = clipTargetSampling();
-  // Phases 1 and 2 once for the five operations (clipping.h: each answer is clip()'s, bit for bit).
+// The five operations on a pair as the clip targets clip them, phases 1 and 2 once (clipping.h:
+// each answer is clip()'s, bit for bit): the answers given, each ClipFailure and non-finite answer
+// added to outcome's findings, and outcome.refused on InvalidInput.
+inline std::vector<std::pair<Op, Region>> clipFive(const Pair& p, Variant variant, ClipOutcome& outcome) {
+  using Kind = ClipFinding::Kind;
+  std::vector<std::pair<Op, Region>> answers;
   std::optional<Clipping> clipping;
   try {
     clipping.emplace(p.subject, p.clip, optionsOf(variant));
   } catch (const InvalidInput&) {
     outcome.refused = true;
-    return outcome;
+    return answers;
   } catch (const ClipFailure& e) {  // phase 1 gave up: clip() fails so for every operation
-    for (Op op : kAllOps) outcome.findings.push_back({op, std::string("ClipFailure: ") + e.what()});
-    return outcome;
+    for (Op op : kAllOps) outcome.findings.push_back({op, Kind::ClipFailure, std::string("ClipFailure: ") + e.what()});
+    return answers;
   }
-  std::vector<std::pair<Op, Region>> answers;
   for (Op op : kAllOps) {
     try {
       answers.emplace_back(op, clipping->result(op));
     } catch (const ClipFailure& e) {
-      outcome.findings.push_back({op, std::string("ClipFailure: ") + e.what()});
+      outcome.findings.push_back({op, Kind::ClipFailure, std::string("ClipFailure: ") + e.what()});
       continue;
     }
     const bool finite = std::all_of(answers.back().second.begin(), answers.back().second.end(), [](const Ring& ring) {
       return std::all_of(ring.begin(), ring.end(), [](const Point& q) { return std::isfinite(q.x) && std::isfinite(q.y); });
     });
-    if (!finite) outcome.findings.push_back({op, "non-finite output", true});
+    if (!finite) outcome.findings.push_back({op, Kind::NonFinite, "non-finite output"});
   }
+  return answers;
+}
+
+// All five operations on a pair, each answer through the judges the targets run: a ClipFailure,
+// non-finite output, the cheap invariants, and the sampling oracle (the five answers at once).
+// The clip targets trap or record what this finds; tests/golden/judge_verdicts_test.cpp pins it
+// on committed inputs, so that a faster judge is shown to find the same.
+inline ClipOutcome clipAndJudge(const Pair& p, Variant variant) {
+  using Kind = ClipFinding::Kind;
+  ClipOutcome outcome;
+  const std::vector<std::pair<Op, Region>> answers = clipFive(p, variant, outcome);
   if (answers.empty()) return outcome;
 #ifdef GHCLIP_FUZZ_UNJUDGED
   return outcome;  // the ceiling: what an execution costs before any judge (fuzz/CMakeLists.txt)
@@ -87,15 +98,15 @@ inline ClipOutcome clipAndJudge(const Pair& p, Variant variant) {
   const oracle::InvariantJudge invariants(p.subject, p.clip);
   for (const auto& [op, r] : answers) {
     const auto violations = invariants.violations(op, r);
-    if (!violations.empty()) outcome.findings.push_back({op, "invariant: " + violations.front()});
+    if (!violations.empty()) outcome.findings.push_back({op, Kind::Invariant, "invariant: " + violations.front()});
   }
   // The five answers at once: each at every point a check of it alone would judge, or at one in
   // the same face, and at the points of the others (sampling_oracle.h).
   std::vector<std::pair<Op, const Region*>> judged;
   for (const auto& [op, r] : answers) judged.emplace_back(op, &r);
-  const auto verdicts = oracle::SamplingJudge(p.subject, p.clip, so).check(judged);
+  const auto verdicts = oracle::SamplingJudge(p.subject, p.clip, clipTargetSampling()).check(judged);
   for (std::size_t i = 0; i < answers.size(); ++i) {
-    if (!verdicts[i].pass()) outcome.findings.push_back({answers[i].first, "sampling oracle disagrees"});
+    if (!verdicts[i].pass()) outcome.findings.push_back({answers[i].first, Kind::Sampling, "sampling oracle disagrees"});
   }
   return outcome;
 }
@@ -108,7 +119,7 @@ inline int clipTarget(const char* target, Variant variant, const std::uint8_t* d
   if (outcome.findings.empty()) return 0;
   RecordedOperands operands(p.subject, p.clip);  // as its findings name them
   for (const ClipFinding& f : outcome.findings) {
-    if (variant == Variant::Exact || f.trapsAlways) trap(f.what, p.subject, p.clip, f.op);
+    if (variant == Variant::Exact || f.trapsAlways()) trap(f.what, p.subject, p.clip, f.op);
     record(target, f.what, operands, f.op, data, size);
   }
   return 0;

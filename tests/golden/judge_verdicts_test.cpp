@@ -40,10 +40,12 @@ std::string verdictOf(const Bytes& input, Variant variant) {
     std::string letters;
     for (const ClipFinding& f : outcome.findings) {
       if (f.op != op) continue;
-      if (f.what.rfind("ClipFailure", 0) == 0) letters += 'F';
-      else if (f.what == "non-finite output") letters += 'N';
-      else if (f.what.rfind("invariant", 0) == 0) letters += 'I';
-      else letters += 'S';
+      switch (f.kind) {
+        case ClipFinding::Kind::ClipFailure: letters += 'F'; break;
+        case ClipFinding::Kind::NonFinite: letters += 'N'; break;
+        case ClipFinding::Kind::Invariant: letters += 'I'; break;
+        case ClipFinding::Kind::Sampling: letters += 'S'; break;
+      }
     }
     if (!out.empty()) out += ',';
     out += letters.empty() ? "." : letters;
