@@ -1,5 +1,6 @@
 // Where a clip fuzz target's execution goes: the clip (the five operations) against its judges
-// (the invariants and the sampling oracle, as fuzz/clip_target.h runs them), timed side by side
+// (the invariants, the sampling oracle, the boundary certificate, and the three as
+// fuzz/clip_target.h runs them), timed side by side
 // in one run on the fuzz inputs pinned by tests/golden/judge_verdicts.golden (seeds, regressions
 // and grown corpora of the clip targets), in a release build without sanitizers. Each timed
 // iteration runs one stage over every input that is not refused; repetitions interleaved in
@@ -9,6 +10,7 @@
 //   judge_cost OUT.md [google benchmark flags]
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -109,6 +111,38 @@ void samplingStage(benchmark::State& s, Variant variant) {
   s.counters["answers_failed"] = failed;
 }
 
+void certificateStage(benchmark::State& s, Variant variant) {
+  const auto& all = executionsOf(variant);
+  double proved = 0;
+  for (auto _ : s) {
+    proved = 0;
+    for (const Execution& e : all) {
+      if (e.answers.empty()) continue;
+      std::vector<std::pair<Op, const Region*>> judged;
+      for (const auto& [op, r] : e.answers) judged.emplace_back(op, &r);
+      const std::vector<bool> c = oracle::certifiedAnswers(e.pair.subject, e.pair.clip, judged);
+      proved += std::all_of(c.begin(), c.end(), [](bool b) { return b; });
+    }
+  }
+  s.counters["executions"] = static_cast<double>(all.size());
+  s.counters["proved"] = proved;
+}
+
+// The judges as the target runs them (fuzz::judgeFive): the invariants, then the certificate for
+// the exact variant and the sampling oracle where it does not prove all five.
+void targetJudgesStage(benchmark::State& s, Variant variant) {
+  const auto& all = executionsOf(variant);
+  for (auto _ : s) {
+    for (const Execution& e : all) {
+      if (e.answers.empty()) continue;
+      fuzz::ClipOutcome outcome;
+      fuzz::judgeFive(e.pair, variant, e.answers, outcome);
+      benchmark::DoNotOptimize(outcome);
+    }
+  }
+  s.counters["executions"] = static_cast<double>(all.size());
+}
+
 }  // namespace
 
 int run(int argc, char** argv) {
@@ -120,7 +154,11 @@ int run(int argc, char** argv) {
   const struct {
     const char* name;
     void (*stage)(benchmark::State&, Variant);
-  } stages[] = {{"clip", clipStage}, {"invariants", invariantsStage}, {"sampling", samplingStage}};
+  } stages[] = {{"clip", clipStage},
+                {"invariants", invariantsStage},
+                {"sampling", samplingStage},
+                {"certificate", certificateStage},
+                {"target-judges", targetJudgesStage}};
   for (const Variant_& v : kVariants) {
     for (const auto& st : stages) {
       benchmark::RegisterBenchmark((std::string(v.name) + "/" + st.name).c_str(),
@@ -142,21 +180,27 @@ int run(int argc, char** argv) {
         "stop when every answer has failed: `fuzz/clip_target.h`). Release build, no sanitizers; "
         "each timed iteration runs one stage over every input; "
      << kRepetitions
-     << " repetitions, interleaved in random order; medians [min-max] in µs per execution. A fuzz "
-        "target's executions also pay ASan and UBSan on the clip, libFuzzer and fork mode "
-        "(`./harness fuzz` reports what they reach).\n\n"
-     << "| variant | executions | clip µs | invariants µs | sampling oracle µs | judges / clip | "
-        "points per answer | answers failed |\n|---|---|---|---|---|---|---|---|\n";
+     << " repetitions, interleaved in random order; medians [min-max] in µs per execution. The boundary "
+        "certificate (`ghoracle/boundary_certificate.h`) on the five answers at once, and the "
+        "executions whose five it proves; the target's judges: the invariants, then for the exact "
+        "variant the certificate, and the sampling oracle where it does not prove all five "
+        "(`fuzz::judgeFive`). A fuzz target's executions also pay ASan and UBSan on the clip, "
+        "libFuzzer and fork mode (`./harness fuzz` reports what they reach).\n\n"
+     << "| variant | executions | clip µs | invariants µs | sampling oracle µs | certificate µs | proved "
+        "| the target's judges µs | its judges / clip | points per answer | answers failed |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Variant_& v : kVariants) {
     const BenchRow* clip = findRow(f, std::string(v.name) + "/clip", 1);
     const BenchRow* inv = findRow(f, std::string(v.name) + "/invariants", 1);
     const BenchRow* smp = findRow(f, std::string(v.name) + "/sampling", 1);
+    const BenchRow* cert = findRow(f, std::string(v.name) + "/certificate", 1);
+    const BenchRow* judges = findRow(f, std::string(v.name) + "/target-judges", 1);
     const double executions = counterOf(clip, "executions");
     const double perExecution = executions > 0 ? 1000 / executions : 0;  // ms per iteration -> µs per execution
     auto cell = [&](const BenchRow* r) { return r && executions > 0 ? timeRange(*r, perExecution) : std::string("–"); };
     md << "| " << v.name << " | " << reportNumber(executions) << " | " << cell(clip) << " | " << cell(inv) << " | "
-       << cell(smp) << " | "
-       << (clip && inv && smp ? reportNumber((inv->medianMs + smp->medianMs) / clip->medianMs) : "–") << " | "
+       << cell(smp) << " | " << cell(cert) << " | " << (cert ? reportNumber(counterOf(cert, "proved")) : "–") << " | "
+       << cell(judges) << " | " << (clip && judges ? reportNumber(judges->medianMs / clip->medianMs) : "–") << " | "
        << (smp ? reportNumber(counterOf(smp, "points_per_answer")) : "–") << " | "
        << (smp ? reportNumber(counterOf(smp, "answers_failed")) : "–") << " |\n";
   }

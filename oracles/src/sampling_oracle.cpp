@@ -14,6 +14,7 @@
 #include "ghoracle/exact_orientation.h"
 #include "filtered_orientation.h"
 #include "judging_scale.h"
+#include "line_distance.h"
 #include "ghoracle/mix_bits.h"
 #include "point_hash.h"
 #include "point_table.h"
@@ -52,20 +53,6 @@ void forUniformPoints(const Box& box, std::uint64_t seed, std::size_t count, F&&
     const Point p{x, uniformIn(rng, box.minY, box.maxY)};
     if (std::isfinite(p.x) && std::isfinite(p.y)) f(p);
   }
-}
-
-// Whether |(b - a) x (p - a)| <= bound, i.e. p is within bound / |b - a| of the line ab: in
-// doubles when the rounding cannot matter, else exactly (p near the origin and a, b at 1e144
-// would cancel to noise): crossAtMost, whose integer stage allocates nothing (the rationals it
-// replaced took 12,000 instructions a call, 8 % of fuzz_clip_exact's, for 0.6 % of the calls).
-bool lineDistanceAtMost(Point a, Point b, Point p, double bound) {
-  const double l = (b.x - a.x) * (p.y - a.y), r = (b.y - a.y) * (p.x - a.x);
-  const double det = std::abs(l - r), error = kOrientationErrorFactor * (std::abs(l) + std::abs(r));
-  if (std::isfinite(det) && std::isfinite(error) && std::abs(l) + std::abs(r) > 0x1p-900) {
-    if (det + error <= bound) return true;
-    if (det - error > bound) return false;
-  }
-  return crossAtMost(a, b, p, bound);
 }
 
 // The edges of S and C, with what a point near one needs to know: how far from it a correct

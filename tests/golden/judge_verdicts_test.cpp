@@ -112,6 +112,46 @@ TEST(JudgeVerdicts, EachVariantFindsWhatIsPinned) {
   EXPECT_GE(findings, pins.size()) << "findings over all inputs and variants";
 }
 
+// The boundary certificate lets the exact target skip the sampling oracle for answers it proves
+// right (boundary_certificate.h): on every pinned input and every variant's answers (the naive
+// and sweep variants' are wrong on most), the sampling oracle, as the clip targets run it but
+// never stopping early, passes every answer the certificate proves. And it proves the exact
+// variant's five answers on most pinned inputs, or the exact target would be sampling again.
+TEST(JudgeVerdicts, TheSamplingOraclePassesEveryCertifiedAnswer) {
+  const std::vector<JudgePin> pins = readPins();
+  ASSERT_GE(pins.size(), 1000u);
+  oracle::SampleOptions full = clipTargetSampling();
+  full.stopWhenAllFail = false;
+  std::size_t certified = 0, refuted = 0, exactExecutions = 0, exactProved = 0;
+  for (const JudgePin& pin : pins) {
+    const Bytes input = bytesOfHex(pin.hex);
+    const Pair p = clipPair(input.data(), input.size());
+    for (Variant variant : kVariants) {
+      ClipOutcome outcome;
+      const std::vector<std::pair<Op, Region>> answers = clipFive(p, variant, outcome);
+      if (answers.empty()) continue;
+      std::vector<std::pair<Op, const Region*>> judged;
+      for (const auto& [op, r] : answers) judged.emplace_back(op, &r);
+      const std::vector<bool> proved = oracle::certifiedAnswers(p.subject, p.clip, judged);
+      if (variant == Variant::Exact && answers.size() == std::size(kAllOps)) {
+        ++exactExecutions;
+        exactProved += std::all_of(proved.begin(), proved.end(), [](bool b) { return b; });
+      }
+      if (std::none_of(proved.begin(), proved.end(), [](bool b) { return b; })) continue;
+      const auto verdicts = oracle::SamplingJudge(p.subject, p.clip, full).check(judged);
+      for (std::size_t i = 0; i < answers.size(); ++i) {
+        if (!proved[i]) continue;
+        ++certified;
+        if (verdicts[i].pass()) continue;
+        if (++refuted <= 10) ADD_FAILURE() << "certified, yet the sampling oracle disagrees: " << name(answers[i].first) << ", input " << pin.hex.substr(0, 48) << "...";
+      }
+    }
+  }
+  EXPECT_EQ(refuted, 0u) << "of " << certified << " certified answers";
+  EXPECT_GE(certified, pins.size()) << "answers certified over all inputs and variants";
+  EXPECT_GE(exactProved * 10, exactExecutions * 9) << exactProved << " of " << exactExecutions << " exact executions certified";
+}
+
 int write(const std::string& file, const std::vector<std::string>& dirs) {
   std::vector<std::string> order;
   std::set<std::string> seen;
