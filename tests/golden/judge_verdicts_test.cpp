@@ -147,6 +147,8 @@ TEST(JudgeVerdicts, TheSamplingOraclePassesEveryCertifiedAnswer) {
       }
     }
   }
+  std::cout << certified << " answers certified, " << refuted << " refuted; the exact variant's five on " << exactProved
+            << " of " << exactExecutions << " executions\n";
   EXPECT_EQ(refuted, 0u) << "of " << certified << " certified answers";
   EXPECT_GE(certified, pins.size()) << "answers certified over all inputs and variants";
   EXPECT_GE(exactProved * 10, exactExecutions * 9) << exactProved << " of " << exactExecutions << " exact executions certified";
