@@ -10,23 +10,28 @@
 // translated by the symbolic (eps, eps^2) first, so that every contact of S and C (a shared vertex,
 // a vertex on an edge, an overlap) is a proper crossing or none, decided exactly; as eps -> 0 the
 // pieces tend to a boundary of op(S, C) (the limit's interior is op(S, C)'s wherever that is
-// defined, and a boundary mod 2 is unique). A crossing at a vertex of S or C is that vertex. A
-// crossing inside both edges stands for the one vertex of the answers that lies in both edges'
-// boxes and within 2 ulps of both lines (of the crossing's magnitude, bounded by both edges'),
-// which is how a faithful rounding of it lies; with none or several, it stays symbolic. An answer
-// is certified when its edges and these pieces cover every point equally mod 2, decided exactly:
-// equal segments cancel, and what is left must cancel on each line (every end met an even number
-// of times there), with no symbolic end.
+// defined, and a boundary mod 2 is unique). A crossing at a double point (a vertex of S or C, a
+// grid point) is that point. A crossing inside both edges stands for a vertex of the answers that
+// lies in both edges' boxes and within 2 ulps of both lines (of the crossing's magnitude, bounded
+// by both edges'), which is how a faithful rounding of it lies: the one such vertex; among several
+// (crossings a few ulps apart), the one nearest it, or the one in the crossings' order; with none,
+// a symbolic end no answer has (an even number of such crossings at one point, which the answers
+// pass straight through, is not cut at). An answer is certified when its edges and these pieces
+// cover every point equally mod 2, up to slivers within the rounding, decided exactly: equal
+// segments cancel; what cancels on its lines goes (every end met an even number of times there);
+// and what is left, with no symbolic end, must be a cycle whose fan of triangles from one of its
+// vertices lies, triangle by triangle, within 2 ulps of one edge of S or C and inside its box.
 //
-// What a certificate proves: the answer's interior differs from op(S, C)'s only between a piece
-// and the same piece with rounded ends, all within 2 ulps of an edge of S or C and inside that
-// edge's box, where the sampling oracle skips every point (its delta there is 8 ulps of the
-// largest crossing on the edge: sampling_oracle.h). So the sampling oracle passes every certified
-// answer, and a caller may skip it for those; tests/golden/judge_verdicts_test.cpp pins that the
-// fuzz targets' verdicts are the same either way. No certificate proves nothing: a wrong answer
-// gets none, and so does a right one whose boundary the certificate does not follow (two crossings
-// at one point rounded apart, a clean-up that merged a rounded piece with the next); the caller
-// samples those.
+// What a certificate proves: the answer's interior differs from op(S, C)'s only within 2 ulps of
+// edges of S or C and inside their boxes (between a piece and the same piece with rounded ends,
+// and in those slivers), where the sampling oracle skips every point (its delta there is 8 ulps of
+// the largest crossing on the edge: sampling_oracle.h). So the sampling oracle passes every
+// certified answer, and a caller may skip it for those
+// (JudgeVerdicts.TheSamplingOraclePassesEveryCertifiedAnswer checks it on the pinned fuzz
+// inputs). No certificate proves nothing: a wrong answer gets none, and so may a right one whose
+// boundary the certificate does not follow (crossings rounded in a way it does not match); the
+// caller samples those. Problems at extreme magnitudes are certified at a comfortable scale
+// (judging_scale.h), exactly as the sampling oracle judges them.
 #pragma once
 
 #include <utility>
