@@ -92,12 +92,10 @@ struct Key {
   Point point() const { return {x, y}; }
 };
 
-// A segment with its ends in order, so that a segment and its reverse are equal.
+// A segment with its ends in order, so that a segment and its reverse are one.
 struct Piece {
   Key u, v;
   Piece(Key a, Key b) : u(std::min(a, b)), v(std::max(a, b)) {}
-  bool operator<(const Piece& o) const { return u < o.u || (u == o.u && v < o.v); }
-  bool operator==(const Piece& o) const { return u == o.u && v == o.v; }
 };
 
 // A crossing on an edge g = (p, q) of one operand with an edge h of the other, where it lies as
@@ -236,6 +234,18 @@ bool inBox(Edge e, Point p) {
          p.y <= std::max(e.a.y, e.b.y);
 }
 
+// Whether every key occurs an even number of times among ends (sorted here).
+bool eachMetEvenly(std::vector<Key>& ends) {
+  std::sort(ends.begin(), ends.end());
+  for (std::size_t k = 0; k < ends.size();) {
+    std::size_t m = k;
+    while (m < ends.size() && ends[m] == ends[k]) ++m;
+    if ((m - k) % 2 != 0) return false;
+    k = m;
+  }
+  return true;
+}
+
 // The pieces left after equal ones cancelled that cancel on their lines too: on each line, every
 // end met an even number of times (marked in `gone`).
 void cancelOnLines(const std::vector<Piece>& rest, std::vector<char>& gone) {
@@ -253,15 +263,7 @@ void cancelOnLines(const std::vector<Piece>& rest, std::vector<char>& gone) {
       group.push_back(j);
       ends.push_back(rest[j].u), ends.push_back(rest[j].v);
     }
-    std::sort(ends.begin(), ends.end());
-    bool even = true;
-    for (std::size_t k = 0; k < ends.size() && even;) {
-      std::size_t m = k;
-      while (m < ends.size() && ends[m] == ends[k]) ++m;
-      even = (m - k) % 2 == 0;
-      k = m;
-    }
-    if (even) {
+    if (eachMetEvenly(ends)) {
       for (std::size_t j : group) gone[j] = 1;
     }
   }
@@ -276,8 +278,7 @@ class Certifier {
     findCrossings();
     nearS_.assign(s_.edges.size(), 0), nearC_.assign(c_.edges.size(), 0);
     for (const Interior& k : interiors_) {
-      const double d = 2 * ulpOf(std::min(magnitude(s_.edges[k.e]), magnitude(c_.edges[k.f])));
-      nearS_[k.e] = std::max(nearS_[k.e], d), nearC_[k.f] = std::max(nearC_[k.f], d);
+      nearS_[k.e] = std::max(nearS_[k.e], k.near), nearC_[k.f] = std::max(nearC_[k.f], k.near);
     }
     gatherVertices();
     for (std::size_t k = 0; k < interiors_.size(); ++k) findCandidates(k);
@@ -300,8 +301,6 @@ class Certifier {
     std::vector<bool> certified(answers_.size(), false);
     constexpr std::size_t kMostAnswers = 64;
     if (answers_.size() > kMostAnswers) return certified;
-    std::vector<std::uint64_t> all(answers_.size());
-    for (std::size_t k = 0; k < answers_.size(); ++k) all[k] = std::uint64_t{1} << k;
     const std::vector<Key> keys = chooseKeys(nullptr);
     const std::vector<bool> first = compare(keys, answers_.size() == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << answers_.size()) - 1);
     for (std::size_t k = 0; k < answers_.size(); ++k) {
@@ -310,14 +309,17 @@ class Certifier {
       std::vector<Point> own;
       for (const Ring& ring : *answers_[k].second) own.insert(own.end(), ring.begin(), ring.end());
       std::sort(own.begin(), own.end(), byXY);
-      certified[k] = compare(chooseKeys(&own), all[k])[k];
+      certified[k] = compare(chooseKeys(&own), std::uint64_t{1} << k)[k];
     }
     return certified;
   }
 
  private:
   struct Interior {
-    std::size_t e, f;  // its edges of S and C
+    std::size_t e, f;        // its edges of S and C
+    double lo, hi;           // where along e it lies (parameterBounds)
+    double near;             // 2 ulps of its magnitude (bounded by both edges')
+    double boundE, boundF;   // near times each edge's length: lineDistanceAtMost's bounds
   };
   // A piece's end: an end of its edge, or a crossing on it.
   struct End {
@@ -363,7 +365,9 @@ class Certifier {
           const auto [flo, fhi] = parameterBounds(f, e);
           onS_[i].push_back({f, true, {}, da, interiors_.size(), elo, ehi, nullptr});
           onC_[j].push_back({e, true, {}, dc, interiors_.size(), flo, fhi, nullptr});
-          interiors_.push_back({i, j});
+          const double near = 2 * ulpOf(std::min(magnitude(e), magnitude(f)));
+          interiors_.push_back({i, j, elo, ehi, near, near * std::hypot(e.b.x - e.a.x, e.b.y - e.a.y),
+                                near * std::hypot(f.b.x - f.a.x, f.b.y - f.a.y)});
         }
       }
     }
@@ -388,11 +392,10 @@ class Certifier {
   // Whether p may stand for interior crossing k: in both edges' boxes, within 2 ulps (of the
   // crossing's magnitude, which both edges' bound) of both lines.
   bool rounds(std::size_t k, Point p) const {
-    const Edge e = s_.edges[interiors_[k].e], f = c_.edges[interiors_[k].f];
-    const double d = 2 * ulpOf(std::min(magnitude(e), magnitude(f)));
-    const double boundE = d * std::hypot(e.b.x - e.a.x, e.b.y - e.a.y), boundF = d * std::hypot(f.b.x - f.a.x, f.b.y - f.a.y);
-    return std::isfinite(boundE) && std::isfinite(boundF) && inBox(e, p) && inBox(f, p) && lineDistanceAtMost(e.a, e.b, p, boundE) &&
-           lineDistanceAtMost(f.a, f.b, p, boundF);
+    const Interior& x = interiors_[k];
+    const Edge e = s_.edges[x.e], f = c_.edges[x.f];
+    return std::isfinite(x.boundE) && std::isfinite(x.boundF) && inBox(e, p) && inBox(f, p) &&
+           lineDistanceAtMost(e.a, e.b, p, x.boundE) && lineDistanceAtMost(f.a, f.b, p, x.boundF);
   }
 
   // The answers' vertices that may stand for interior crossing k (at most kMostCandidates), found
@@ -405,7 +408,7 @@ class Certifier {
     // Narrowed to where along e the crossing lies, widened by far more than its rounding (a
     // rounding within 2 ulps of both lines lies near the crossing unless the lines are almost
     // parallel, and then the bounds on where it lies are wide too).
-    const auto [lo, hi] = parameterBounds(e, f);
+    const double lo = interiors_[k].lo, hi = interiors_[k].hi;
     if (lo <= hi) {
       const double u = e.a.x + lo * (e.b.x - e.a.x), w = e.a.x + hi * (e.b.x - e.a.x);
       const double slack = 64 * ulpOf(magnitude(e)) + 64 * std::abs(hi - lo) * std::abs(e.b.x - e.a.x);
@@ -696,13 +699,7 @@ class Certifier {
       if (piece.u.symbolic >= 0 || piece.v.symbolic >= 0) return false;
       ends.push_back(piece.u), ends.push_back(piece.v);
     }
-    std::sort(ends.begin(), ends.end());
-    for (std::size_t k = 0; k < ends.size();) {
-      std::size_t m = k;
-      while (m < ends.size() && ends[m] == ends[k]) ++m;
-      if ((m - k) % 2 != 0) return false;  // not a cycle: the pieces are not a boundary
-      k = m;
-    }
+    if (!eachMetEvenly(ends)) return false;  // not a cycle: the pieces are not a boundary
     std::vector<char> gone;
     cancelOnLines(rest, gone);
     std::vector<Key> part;
