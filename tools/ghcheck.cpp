@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "ghclip/ogc_layout.h"
 #include "ghio/formats.h"
 #include "ghio/svg.h"
 #include "ghoracle/exact_oracle.h"
@@ -59,12 +60,21 @@ int run(int argc, char** argv) {
   const gh::Region clip = gh::tools::readValidRegion(clipPath);
 
   if (expectedOnly) {
-    const gh::Region answer = gh::oracle::exactAnswer(subject, clip, *op);
     if (layoutName != "ogc" && layoutName != "rings") {
       return gh::tools::usageError("ghcheck", "unknown --layout '" + layoutName + "'");
     }
-    gh::io::writeText(outPath, gh::io::write(answer, formatName == "geojson" ? gh::io::Format::GeoJson : gh::io::Format::Wkt,
-                                             layoutName == "ogc" ? gh::io::Layout::Ogc : gh::io::Layout::Rings));
+    const auto format = formatName == "geojson" ? gh::io::Format::GeoJson : gh::io::Format::Wkt;
+    // The exact answer's boundary knows the lines of S and C it runs along: its layout nodes it at
+    // their exact crossings, as the clip's does (ghclip/ogc_layout.h).
+    std::string text;
+    if (layoutName == "ogc") {
+      gh::LayoutStats layout;
+      text = gh::io::write(gh::ogcLayout(gh::oracle::exactAnswerLines(subject, clip, *op), &layout), format);
+      if (layout.snapRounded) gh::tools::requireWithinRounding(subject, clip, *op, text);
+    } else {
+      text = gh::io::write(gh::oracle::exactAnswer(subject, clip, *op), format);
+    }
+    gh::io::writeText(outPath, text);
     return 0;
   }
 

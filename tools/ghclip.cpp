@@ -7,6 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "ghclip/clip.h"
+#include "ghclip/clipping.h"
+#include "ghclip/ogc_layout.h"
+#include "ghclip/ogc_validity.h"
 #include "ghclip/errors.h"
 #include "ghclip/measure.h"
 #include "ghio/formats.h"
@@ -16,6 +19,7 @@
 #include "ghoracle/sampling_oracle.h"
 #include "stats_json.h"
 #include "verdict_json.h"
+#include "written_answer.h"
 #include "peer_in_child.h"
 #include "tool_main.h"
 
@@ -27,8 +31,9 @@ constexpr const char* kDescription =
     "GeoJSON (Polygon, MultiPolygon, Feature...), '-' for stdin. All rings of an input are\n"
     "pooled and its interior is the even-odd rule over all of them: holes are rings inside\n"
     "rings, and OGC shell/hole roles are ignored.\n"
-    "Output: a MULTIPOLYGON (GeoJSON MultiPolygon) of polygons with holes that GEOS calls valid\n"
-    "(--layout ogc, the default), or of one polygon per raw ring (--layout rings).\n"
+    "Output: a MULTIPOLYGON (GeoJSON MultiPolygon) of valid OGC polygons with holes (--layout ogc,\n"
+    "the default: noded and nested exactly, vertices input vertices or faithfully rounded crossings\n"
+    "of input edges), or of one polygon per raw ring (--layout rings).\n"
     "Arithmetic: exact by default (exact predicates, Simulation of Simplicity: no input vertex\n"
     "moves); --variant naive or --arithmetic paper runs the paper's doubles and perturbation.\n"
     "Exit codes: 0 done, 1 clipping or --check failed on valid input, 2 bad input, usage or an\n"
@@ -67,7 +72,8 @@ int run(int argc, char** argv) {
   app.add_flag("--stats", wantStats,
                "print statistics as JSON (stdout when -o names a file, else stderr)");
   app.add_option("--check", checkName,
-                 "judge the result as computed, before the OGC layout, with an oracle: exact | sample (exit 1 if it fails)");
+                 "judge the answer as written (the output's bytes read back) with an oracle: exact | sample (exit 1 "
+                 "if it fails)");
   app.add_flag("--sanitize", sanitize, "drop rings with fewer than 3 distinct vertices");
   app.add_option("--threads", threads, "threads for the clip, 0 = every core (the answer is the same on any number)")
       ->capture_default_str();
@@ -125,11 +131,13 @@ int run(int argc, char** argv) {
     peer = gh::peers::findPeer(peerName);
     if (!peer) return gh::tools::usageError("ghclip", "unknown --peer '" + peerName + "'");
   }
-  gh::Stats stats;
-  gh::Region result;
+  const bool ogc = layoutName == "ogc";
+  const auto format = formatName == "geojson" ? gh::io::Format::GeoJson : gh::io::Format::Wkt;
+  const auto layout = ogc ? gh::io::Layout::Ogc : gh::io::Layout::Rings;
+  gh::tools::WrittenAnswer answer;
+  const auto clipStart = Clock::now();
   try {
     if (peer) {
-      const auto start = std::chrono::steady_clock::now();
       // In a child process: a peer that crashes (CGAL has) is reported, never takes ghclip down.
       gh::tools::PeerOutcome outcome = gh::tools::clipInChild(*peer, subject, clip, *op);
       if (outcome.kind == gh::tools::PeerOutcome::Kind::Refused) throw gh::InvalidInput(outcome.message);  // exit 2
@@ -137,12 +145,15 @@ int run(int argc, char** argv) {
         std::cerr << "ghclip: " << peer->name() << " failed: " << outcome.message << std::endl;  // one line, exit 1
         return gh::tools::kExitFailed;
       }
-      result = std::move(outcome.result);
-      stats.phase1Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      stats.outputRings = result.size();
-      stats.outputVertices = gh::vertexCount(result);
+      const double seconds = secondsSince(clipStart);
+      const std::size_t rings = outcome.result.size(), vertices = gh::vertexCount(outcome.result);
+      answer = gh::tools::writtenAnswer(std::move(outcome.result), subject, clip, *op, format, layout);
+      answer.stats.phase1Seconds = seconds;
+      answer.stats.outputRings = rings;
+      answer.stats.outputVertices = vertices;
     } else {
-      result = gh::clip(subject, clip, *op, options, &stats);
+      gh::Clipping clipping(subject, clip, options);
+      answer = gh::tools::writtenAnswer(clipping, subject, clip, *op, format, layout);
     }
   } catch (const gh::InvalidInput& e) {
     // Name the file the refused operand came from; a peer's refusal may concern either.
@@ -150,33 +161,44 @@ int run(int argc, char** argv) {
     if (e.operand() == "clip") throw gh::tools::BadInput(clipPath + ": " + e.problem());
     throw gh::tools::BadInput(subjectPath + " / " + clipPath + ": " + e.what());
   }
-
-  const auto format = formatName == "geojson" ? gh::io::Format::GeoJson : gh::io::Format::Wkt;
-  // The answer and its picture together, or neither (a failing --svg leaves no -o file).
+  const gh::Stats& stats = answer.stats;
+  const gh::LayoutStats& layoutStats = answer.layout;
+  const std::string& text = answer.text;
   const auto writeStart = Clock::now();
+  // --check judges what is written: the bytes read back, as any reader of the file gets them, and
+  // (--layout ogc) the polygons' validity, exactly.
+  nlohmann::json check;
+  bool checkPassed = true;
+  if (!checkName.empty()) {
+    const gh::Region written = gh::io::readAuto(text);
+    if (checkName == "exact") {
+      const auto v = gh::oracle::exactCheck(subject, clip, *op, written, {false, false, false});
+      checkPassed = v.pass;
+      check = gh::tools::verdictJson(v);
+    } else {
+      const auto v = gh::oracle::sampleCheck(subject, clip, *op, written);
+      checkPassed = v.pass();
+      check = gh::tools::verdictJson(v);
+    }
+    if (ogc) {
+      const auto invalid = gh::ogcInvalidity(answer.polygons);
+      check["ogc_valid"] = !invalid;
+      if (invalid) check["ogc_invalidity"] = *invalid, checkPassed = false;
+    }
+  }
+  // The answer and its picture together, or neither (a failing --svg leaves no -o file).
   gh::io::OutputFiles files;
-  files.add(outPath, gh::io::write(result, format, layoutName == "ogc" ? gh::io::Layout::Ogc : gh::io::Layout::Rings));
+  files.add(outPath, text);
   if (!svgPath.empty()) {
     const std::string title = std::string(gh::name(*op)) + " (" + (peer ? peerName : gh::name(options)) +
-                              "), even-odd area " + std::to_string(gh::evenOddArea(result));
+                              "), even-odd area " + std::to_string(gh::evenOddArea(answer.rings));
     files.add(svgPath, gh::io::svgPicture({{&subject, "#c6dbef", "#2171b5", "subject"},
                                            {&clip, "#fcbba1", "#cb181d", "clip"},
-                                           {&result, "#2ca02c", "#145214", "result", 0.6}},
+                                           {&answer.rings, "#2ca02c", "#145214", "result", 0.6}},
                                           title));
   }
   files.commit();
   const double writeSeconds = secondsSince(writeStart);
-  nlohmann::json check;
-  bool checkPassed = true;
-  if (checkName == "exact") {
-    const auto v = gh::oracle::exactCheck(subject, clip, *op, result, {false, false, false});
-    checkPassed = v.pass;
-    check = gh::tools::verdictJson(v);
-  } else if (checkName == "sample") {
-    const auto v = gh::oracle::sampleCheck(subject, clip, *op, result);
-    checkPassed = v.pass();
-    check = gh::tools::verdictJson(v);
-  }
   if (wantStats) {
     nlohmann::json j = gh::tools::statsJson(stats);
     j["op"] = gh::name(*op);
@@ -190,7 +212,15 @@ int run(int argc, char** argv) {
       j["threads"] = threads == 0 ? gh::availableThreads() : threads;
     }
     j["read_seconds"] = readSeconds;    // reading and validating both operands
-    j["write_seconds"] = writeSeconds;  // layout, formatting and writing every output
+    if (ogc) {
+      j["layout"] = {{"seconds", layoutStats.seconds},   {"nodes", layoutStats.nodes},
+                     {"new_nodes", layoutStats.newNodes}, {"pieces", layoutStats.pieces},
+                     {"merged", layoutStats.merged},      {"rerounded", layoutStats.rerounded},
+                     {"snap_rounded", layoutStats.snapRounded}, {"routed", layoutStats.routed},
+                     {"polygons", layoutStats.polygons},  {"holes", layoutStats.holes}};
+    }
+    j["format_seconds"] = answer.formatSeconds;  // the text of the answer
+    j["write_seconds"] = writeSeconds;            // --check, the picture and writing every output
     if (!check.is_null()) j["check"] = check;
     (outPath == "-" ? std::cerr : std::cout) << j.dump() << std::endl;
   } else if (!check.is_null()) {

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "ghclip/errors.h"
+#include "ghclip/ogc_layout.h"
 #include "ghio/formats.h"
 #include "ghoracle/exact_oracle.h"
 
@@ -52,6 +53,15 @@ Region readValidRegion(const std::string& path, OnBadRing onBadRing) {
   }
 }
 
+void requireWithinRounding(const Region& subject, const Region& clip, Op op, const std::string& text) {
+  const oracle::ExactVerdict v = oracle::exactCheck(subject, clip, op, io::readAuto(text), {false, false, false});
+  if (!v.pass) {
+    throw LayoutRefusal("the answer has features finer than the doubles, and its snap-rounded layout lies beyond the "
+                        "rounding the exact oracle allows (relative error area " +
+                        std::to_string(v.relativeBeyondRounding()) + ")");
+  }
+}
+
 int guardedMain(const char* tool, int argc, char** argv, int (*run)(int, char**)) {
   try {
     return run(argc, argv);
@@ -66,6 +76,10 @@ int guardedMain(const char* tool, int argc, char** argv, int (*run)(int, char**)
     return kExitCannotJudge;
   } catch (const ClipFailure& e) {
     std::cerr << tool << ": clipping failed: " << oneLine(e.what()) << std::endl;
+    return kExitFailed;
+  } catch (const LayoutRefusal& e) {
+    std::cerr << tool << ": cannot lay the answer out as OGC polygons: " << oneLine(e.what())
+              << "; --layout rings writes the raw rings" << std::endl;
     return kExitFailed;
   } catch (const std::exception& e) {
     std::cerr << tool << ": " << oneLine(e.what()) << std::endl;

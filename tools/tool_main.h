@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "ghclip/operation.h"
 #include "ghclip/region.h"
 #include "ghclip/validate.h"
 
@@ -39,6 +40,12 @@ Region readRegion(const std::string& path);
 // most 2^500, rings of 3 distinct vertices unless onBadRing drops them), so every tool refuses
 // the same input with exit 2, peers and judges included.
 Region readValidRegion(const std::string& path, OnBadRing onBadRing = OnBadRing::Throw);
+
+// A snap-rounded OGC layout (features finer than the doubles: ghclip/ogc_layout.h) bends pieces
+// through other nodes' cells, which the judges' allowance need not cover: such an answer is judged
+// by the exact oracle as written (`text`, read back) before any tool writes it. Throws LayoutRefusal
+// (exit 1) when it fails, oracle::CannotJudge (exit 3) when the oracle cannot decide.
+void requireWithinRounding(const Region& subject, const Region& clip, Op op, const std::string& text);
 
 // Runs `run`, turning every exception into one line on stderr and an exit code:
 // BadInput / gh::InvalidInput -> 2, gh::ClipFailure -> 1, oracle::CannotJudge -> 3

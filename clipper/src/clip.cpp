@@ -6,10 +6,12 @@
 
 #include <chrono>
 #include <optional>
+#include <type_traits>
 
 #include "arithmetic/exact_arithmetic.h"
 #include "arithmetic/paper_arithmetic.h"
 #include "cleanup.h"
+#include "layout/traced_lines.h"
 #include "ghclip/clipping.h"
 #include "ghclip/measure.h"
 #include "paper_perturbation.h"
@@ -55,6 +57,7 @@ struct Clipping::Prepared {
   std::optional<Phase1Result> crossings;  // set once phase 1 has run
   VertexGraph graph;
   bool dissolve = false;   // the arithmetic's clean-up dissolves zero-width seams
+  bool exact = false;      // the exact arithmetic: the traced edges lie on the operands' edges
   ExactCounters counters;  // phases 1 and 2's; each operation adds its clean-up's to a copy
   Stats stats;             // phases 1 and 2's
   unsigned threads = 1;
@@ -81,6 +84,7 @@ struct Clipping::Prepared {
     markEntryExit(graph);
     stats.phase2Seconds = secondsSince(t);
     dissolve = Arithmetic::kLeavesZeroWidthParts;
+    exact = std::is_same_v<Arithmetic, ExactArithmetic>;
   }
 };
 
@@ -131,8 +135,40 @@ Region Clipping::result(Op op, Stats* stats) {
   return result;
 }
 
+std::vector<PolygonWithHoles> Clipping::polygons(Op op, Stats* stats, LayoutStats* layout) {
+  Prepared& p = *prepared_;
+  // The paper arithmetic's edges lie on perturbed copies of the operands' edges, and its points
+  // are not faithful roundings: its rings are laid out as rings that know nothing more.
+  if (!p.exact) return ogcLayout(result(op, stats), layout);
+  Stats local = p.stats;
+  const auto t = Clock::now();
+  FlatRings traced;
+  std::vector<std::uint32_t> lines;
+  traceResult(p.graph, op, traced, p.threads, &lines);
+  ExactCounters counters = p.counters;
+  const LinedRings rings = tracedLines(traced, lines, p.crossings->subject, p.crossings->clip, counters);
+  local.phase3Seconds = secondsSince(t);
+  local.filterFailures = counters.filterFailures;
+  local.expansionDecisions = counters.expansionDecisions;
+  local.exactConstructions = counters.exactConstructions;
+  std::vector<PolygonWithHoles> polygons = ogcLayout(rings, layout);
+  local.outputRings = 0, local.outputVertices = 0;
+  for (const PolygonWithHoles& polygon : polygons) {
+    local.outputRings += 1 + polygon.holes.size();
+    local.outputVertices += polygon.shell.size();
+    for (const Ring& hole : polygon.holes) local.outputVertices += hole.size();
+  }
+  if (stats) *stats = local;
+  return polygons;
+}
+
 Region clip(const Region& subject, const Region& clip, Op op, const Options& options, Stats* stats) {
   return Clipping(subject, clip, options).result(op, stats);
+}
+
+std::vector<PolygonWithHoles> clipPolygons(const Region& subject, const Region& clip, Op op, const Options& options,
+                                           Stats* stats, LayoutStats* layout) {
+  return Clipping(subject, clip, options).polygons(op, stats, layout);
 }
 
 }  // namespace gh

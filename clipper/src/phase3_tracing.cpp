@@ -20,9 +20,18 @@ bool keepsClipPiecesInsideSubject(Op op) {
   return op == Op::Intersection || op == Op::Difference;
 }
 
-void copyRing(const Operand& op, const RingInfo& ring, FlatRings& out) {
+// An operand edge as a number over both operands: the subject's first, then the clip's.
+std::uint32_t edgeNumber(const VertexGraph& g, const Operand& op, std::uint32_t edge) {
+  return &op == g.subject ? edge : static_cast<std::uint32_t>(g.subject->size()) + edge;
+}
+
+void copyRing(const VertexGraph& g, const Operand& op, const RingInfo& ring, FlatRings& out,
+              std::vector<std::uint32_t>* lines) {
   out.points.insert(out.points.end(), op.vertices.begin() + ring.firstVertex, op.vertices.begin() + ring.endVertex);
   out.closeRing();
+  if (lines) {
+    for (std::uint32_t v = ring.firstVertex; v < ring.endVertex; ++v) lines->push_back(edgeNumber(g, op, v));
+  }
 }
 
 // Where the trace goes from an intersection vertex: the node it reaches over in the other
@@ -51,7 +60,7 @@ std::uint32_t runLength(const VertexGraph& g, std::uint32_t from, std::uint32_t 
 // giving the order of the vertices and the rings; (3) the points written, independently, each
 // vertex at its offset. The walk is what a trace is in the paper, with its checks: it throws
 // ClipFailure if a trace does not close within its bound or reaches a used vertex.
-void traceOneOp(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
+void traceOneOp(VertexGraph& g, Op op, FlatRings& out, unsigned threads, std::vector<std::uint32_t>* lines) {
   const bool flipSubject = !keepsSubjectPiecesInsideClip(op);
   const bool flipClip = !keepsClipPiecesInsideSubject(op);
   const std::uint32_t k = g.firstClipNode, nodes = g.nodeCount();
@@ -116,26 +125,34 @@ void traceOneOp(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
   offsets[0] = out.points.size();
   for (std::uint32_t i = 0; i < walked; ++i) offsets[i + 1] = offsets[i] + counts[sequence[i]];
   out.points.resize(offsets[walked]);
+  if (lines) lines->resize(offsets[walked]);
   const Pieces fillPieces = piecesFor(walked, threads, 1 << 14);
   runPieces(fillPieces, threads, [&](std::size_t p) {
     for (std::size_t i = fillPieces.begin(p); i < fillPieces.end(p); ++i) {
       const std::uint32_t n = sequence[i];
       Point* at = out.points.data() + offsets[i];
       *at++ = g.node(n).point;
+      // The answer's edge from the intersection vertex runs along its edge, either way; from an
+      // original vertex, along the edge that leaves it in the direction walked.
+      const Operand& operand = g.operandOf(n);
+      const std::uint32_t edge = g.node(n).edge;
+      std::uint32_t* line = lines ? lines->data() + offsets[i] : nullptr;
+      if (line) *line++ = edgeNumber(g, operand, edge) | kTracedCrossing;
       if (counts[n] == 1) continue;
       // The run after it: forward from the vertex after its edge's start, or backward from its
       // edge's start, cyclically in its ring.
       const bool forward = forwards[n] != 0;
       const RingInfo& ring = g.ringOf(n);
-      const Point* v = g.operandOf(n).vertices.data();
-      const std::uint32_t edge = g.node(n).edge;
+      const Point* v = operand.vertices.data();
       std::uint32_t vertex = !forward ? edge : edge + 1 == ring.endVertex ? ring.firstVertex : edge + 1;
       for (std::uint32_t c = 1; c < counts[n]; ++c) {
         *at++ = v[vertex];
+        const std::uint32_t before = vertex == ring.firstVertex ? ring.endVertex - 1 : vertex - 1;
+        if (line) *line++ = edgeNumber(g, operand, forward ? vertex : before);
         if (forward) {
           vertex = vertex + 1 == ring.endVertex ? ring.firstVertex : vertex + 1;
         } else {
-          vertex = vertex == ring.firstVertex ? ring.endVertex - 1 : vertex - 1;
+          vertex = before;
         }
       }
     }
@@ -144,24 +161,24 @@ void traceOneOp(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
 
   for (const RingInfo& ring : g.subjectRings) {
     if (ring.head == kNone && ring.startsInside == keepsSubjectPiecesInsideClip(op)) {
-      copyRing(*g.subject, ring, out);
+      copyRing(g, *g.subject, ring, out, lines);
     }
   }
   for (const RingInfo& ring : g.clipRings) {
     if (ring.head == kNone && ring.startsInside == keepsClipPiecesInsideSubject(op)) {
-      copyRing(*g.clip, ring, out);
+      copyRing(g, *g.clip, ring, out, lines);
     }
   }
 }
 
 }  // namespace
 
-void traceResult(VertexGraph& g, Op op, FlatRings& out, unsigned threads) {
+void traceResult(VertexGraph& g, Op op, FlatRings& out, unsigned threads, std::vector<std::uint32_t>* lines) {
   if (op == Op::Xor) {
-    traceOneOp(g, Op::Difference, out, threads);
-    traceOneOp(g, Op::ReverseDifference, out, threads);
+    traceOneOp(g, Op::Difference, out, threads, lines);
+    traceOneOp(g, Op::ReverseDifference, out, threads, lines);
   } else {
-    traceOneOp(g, op, out, threads);
+    traceOneOp(g, op, out, threads, lines);
   }
 }
 

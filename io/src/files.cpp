@@ -7,7 +7,7 @@
 
 #include "ghclip/errors.h"
 #include "ghio/formats.h"
-#include "ghio/ogc_layout.h"
+#include "ghclip/ogc_layout.h"
 
 namespace gh::io {
 
@@ -19,11 +19,12 @@ Region readAuto(std::string_view text) {
   throw InvalidInput("empty input (expected WKT or GeoJSON)");
 }
 
+std::string write(const std::vector<PolygonWithHoles>& polygons, Format format) {
+  return format == Format::GeoJson ? writeGeoJson(polygons) : writeWkt(polygons);
+}
+
 std::string write(const Region& region, Format format, Layout layout) {
-  if (layout == Layout::Ogc) {
-    const auto polygons = ogcPolygons(region);
-    return format == Format::GeoJson ? writeGeoJson(polygons) : writeWkt(polygons);
-  }
+  if (layout == Layout::Ogc) return write(ogcLayout(region), format);
   return format == Format::GeoJson ? writeGeoJson(region) : writeWkt(region);
 }
 

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <new>
 #include <set>
 #include <sstream>
@@ -997,6 +998,63 @@ Region exactAnswer(const Region& subject, const Region& clip, Op op) {
     Arrangement arr;
     build(operandCurves(subject, clip, {}), arr);
     return boundaryRings(arr, [op](Face f) { return expectedInside(op, f->data().bits); });
+  });
+}
+
+LinedRings exactAnswerLines(const Region& subject, const Region& clip, Op op) {
+  return judging([&] {
+    Arrangement arr;
+    build(operandCurves(subject, clip, {}), arr);
+    auto in = [op](Face f) { return expectedInside(op, f->data().bits); };
+    auto isBoundary = [&](Halfedge h) { return in(h->face()) && !in(h->twin()->face()); };
+    LinedRings out;
+    std::map<std::tuple<double, double, double, double>, std::uint32_t> lineIds;
+    auto lineOf = [&](Halfedge h) {
+      const Counts& c = h->curve().data();
+      const auto key = std::make_tuple(c.lineA.x, c.lineA.y, c.lineB.x, c.lineB.y);
+      const auto [it, added] = lineIds.emplace(key, static_cast<std::uint32_t>(out.lines.size()));
+      if (added) out.lines.push_back({c.lineA, c.lineB});
+      return it->second;
+    };
+    auto collinear = [&](std::uint32_t a, std::uint32_t b) {
+      const LinedRings::Line &p = out.lines[a], &q = out.lines[b];
+      return a == b || (filteredOrientation(p.from, p.to, q.from) == 0 && filteredOrientation(p.from, p.to, q.to) == 0);
+    };
+    std::unordered_set<const void*> used;
+    for (auto e = arr.halfedges_begin(); e != arr.halfedges_end(); ++e) {
+      const Halfedge first = e;
+      if (used.count(&*first) || !isBoundary(first)) continue;
+      // The ring's halfedges in order, each with its line; then its corners: a vertex where the
+      // boundary goes straight on along one line is no corner.
+      std::vector<Halfedge> walk;
+      Halfedge h = first;
+      do {
+        used.insert(&*h);
+        walk.push_back(h);
+        Halfedge next = h->next();
+        while (!isBoundary(next)) next = next->twin()->next();
+        h = next;
+      } while (h != first);
+      std::vector<std::uint32_t> lines;
+      for (const Halfedge& w : walk) lines.push_back(lineOf(w));
+      const std::size_t n = walk.size(), start = out.points.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t in = lines[(k + n - 1) % n], here = lines[k];
+        if (collinear(in, here)) continue;
+        const KPoint& p = walk[k]->source()->point();
+        const Point rounded{nearestDouble(p.x()), nearestDouble(p.y())};
+        const bool exact = CGAL::exact(p.x()) == EFT(rounded.x) && CGAL::exact(p.y()) == EFT(rounded.y);
+        out.points.push_back(rounded);
+        out.exact.push_back(exact);
+        out.line.push_back(here);
+      }
+      if (out.points.size() - start < 3) {
+        out.points.resize(start), out.exact.resize(start), out.line.resize(start);
+        continue;
+      }
+      out.ringStart.push_back(static_cast<std::uint32_t>(out.points.size()));
+    }
+    return out;
   });
 }
 

@@ -1,5 +1,8 @@
 #include "ghwork/generators.h"
 
+#include "ghclip/errors.h"
+#include "ghclip/validate.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -312,6 +315,16 @@ Workload generate(const std::string& fullName, std::size_t n, std::uint64_t seed
     forEachPoint(w, [](Point& p) { p = {p.x + 1e9, p.y + 1e9}; });
   } else {
     throw std::invalid_argument("unknown workload variant '+" + suffix + "'");
+  }
+  // A suffix can take a feature below the doubles (mixed-magnitude's star of size 2^-300, scaled
+  // by 2^-997 or moved to 1e9): then there is no such workload, and saying so beats bad input.
+  for (const Region* r : {&w.subject, &w.clip}) {
+    try {
+      normalized(*r, OnBadRing::Throw);
+    } catch (const InvalidInput& e) {
+      throw std::invalid_argument(fullName + " (n " + std::to_string(n) + ", seed " + std::to_string(seed) + "): the +" +
+                                  suffix + " variant collapses a ring (" + e.what() + ")");
+    }
   }
   return w;
 }

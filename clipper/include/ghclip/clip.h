@@ -13,6 +13,7 @@
 // largest coordinate and can give up (ClipFailure).
 #pragma once
 
+#include "ghclip/ogc_layout.h"
 #include "ghclip/operation.h"
 #include "ghclip/options.h"
 #include "ghclip/region.h"
@@ -24,5 +25,10 @@ namespace gh {
 // arithmetic only). Fills *stats when given.
 Region clip(const Region& subject, const Region& clip, Op op, const Options& options = {},
             Stats* stats = nullptr);
+
+// The same answer as OGC polygons with holes (ogc_layout.h): what the tools write by default.
+// Throws as clip() does, and LayoutRefusal where no faithful rounding keeps the pieces apart.
+std::vector<PolygonWithHoles> clipPolygons(const Region& subject, const Region& clip, Op op, const Options& options = {},
+                                           Stats* stats = nullptr, LayoutStats* layout = nullptr);
 
 }  // namespace gh

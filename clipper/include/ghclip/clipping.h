@@ -12,6 +12,7 @@
 
 #include <memory>
 
+#include "ghclip/ogc_layout.h"
 #include "ghclip/operation.h"
 #include "ghclip/options.h"
 #include "ghclip/region.h"
@@ -31,6 +32,10 @@ class Clipping {
   // Throws ClipFailure when tracing cannot finish (the paper arithmetic only). Fills *stats as
   // clip() would: the shared phases' counts and times, and this operation's phase 3.
   Region result(Op op, Stats* stats = nullptr);
+  // The answer as polygons with holes (ogc_layout.h): from the traced rings and the operand edges
+  // they run along, for the exact arithmetic; from result(op)'s rings for the paper's. Throws
+  // LayoutRefusal where no faithful rounding keeps the pieces apart.
+  std::vector<PolygonWithHoles> polygons(Op op, Stats* stats = nullptr, LayoutStats* layout = nullptr);
 
  private:
   struct Prepared;

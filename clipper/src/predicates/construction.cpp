@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "predicates/error_free.h"
+#include "predicates/exact_point.h"
 
 namespace gh::detail {
 
@@ -119,6 +120,17 @@ class Rationals {
     return best;
   }
 
+  // The largest double at most v and the smallest at least v (one double when v is one).
+  void bracket(const mpq_t v, double& below, double& above) {
+    const double d = nearest(v);
+    mpq_set_d(a_, d);
+    const int c = mpq_cmp(v, a_);
+    double down, up;
+    neighbours(d, down, up);
+    below = c < 0 ? down : d;
+    above = c > 0 ? up : d;
+  }
+
   mpq_t qx, qy, w1, w2, t, x, y;  // exactCrossing's named values
 
  private:
@@ -133,10 +145,9 @@ class Rationals {
   mpq_t* const r_[12] = {&qx, &qy, &w1, &w2, &t, &x, &y, &a_, &b_, &c_, &bestError_, &liftBelow_};
 };
 
-Point exactCrossing(Point p1, Point p2, Point q1, Point q2, ExactCounters& counters) {
-  ++counters.exactConstructions;
-  thread_local Rationals r;
-  // t = O(q1, q2, p1) / (O(q1, q2, p1) - O(q1, q2, p2)) along p1p2; doubles convert exactly.
+// The exact crossing into r.x and r.y: t = O(q1, q2, p1) / (O(q1, q2, p1) - O(q1, q2, p2)) along
+// p1p2; doubles convert exactly.
+void exactCrossingRationals(Point p1, Point p2, Point q1, Point q2, Rationals& r) {
   r.difference(r.qx, q2.x, q1.x);
   r.difference(r.qy, q2.y, q1.y);
   r.cross(r.w1, r.qx, r.qy, p1.y, q1.y, p1.x, q1.x);  // qx (p1.y - q1.y) - qy (p1.x - q1.x)
@@ -145,6 +156,17 @@ Point exactCrossing(Point p1, Point p2, Point q1, Point q2, ExactCounters& count
   mpq_div(r.t, r.w1, r.t);
   r.along(r.x, r.t, p1.x, p2.x);
   r.along(r.y, r.t, p1.y, p2.y);
+}
+
+Rationals& threadRationals() {
+  thread_local Rationals r;
+  return r;
+}
+
+Point exactCrossing(Point p1, Point p2, Point q1, Point q2, ExactCounters& counters) {
+  ++counters.exactConstructions;
+  Rationals& r = threadRationals();
+  exactCrossingRationals(p1, p2, q1, q2, r);
   return {r.nearest(r.x), r.nearest(r.y)};
 }
 
@@ -261,8 +283,40 @@ Point constructCrossing(Point p1, Point p2, Point q1, Point q2, ExactCounters& c
   return construct(along, p1, p2, q1, q2, counters);
 }
 
+CrossingRoundings crossingRoundings(Point p1, Point p2, Point q1, Point q2) {
+  Rationals& r = threadRationals();
+  exactCrossingRationals(p1, p2, q1, q2, r);
+  CrossingRoundings out;
+  r.bracket(r.x, out.x0, out.x1);
+  r.bracket(r.y, out.y0, out.y1);
+  return out;
+}
+
 Point constructCrossingWithoutFmaInstruction(Point p1, Point p2, Point q1, Point q2, ExactCounters& counters) {
   return construct(alongSegmentBase, p1, p2, q1, q2, counters);
+}
+
+}  // namespace gh::detail
+
+namespace gh::detail {
+
+ExactPoint exactCrossingPoint(Point p1, Point p2, Point q1, Point q2) {
+  const mpq_class qx = mpq_class(q2.x) - q1.x, qy = mpq_class(q2.y) - q1.y;
+  const mpq_class w1 = qx * (mpq_class(p1.y) - q1.y) - qy * (mpq_class(p1.x) - q1.x);
+  const mpq_class w2 = qx * (mpq_class(p2.y) - q1.y) - qy * (mpq_class(p2.x) - q1.x);
+  const mpq_class t = w1 / (w1 - w2);
+  return {p1.x + t * (mpq_class(p2.x) - p1.x), p1.y + t * (mpq_class(p2.y) - p1.y)};
+}
+
+double nearestDouble(const mpq_class& v) {
+  double below, above;
+  threadRationals().bracket(v.get_mpq_t(), below, above);
+  if (below == above) return below;
+  const mpq_class toBelow = v - below, toAbove = mpq_class(above) - v;
+  if (toBelow != toAbove) return toBelow < toAbove ? below : above;
+  std::uint64_t bits;
+  std::memcpy(&bits, &below, sizeof bits);
+  return bits % 2 == 0 ? below : above;  // a tie: the even significand
 }
 
 }  // namespace gh::detail

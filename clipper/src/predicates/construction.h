@@ -21,6 +21,15 @@ namespace gh::detail {
 //      counters.exactConstructions.
 Point constructCrossing(Point p1, Point p2, Point q1, Point q2, ExactCounters& counters);
 
+// Every faithful rounding of the crossing of p1p2 and q1q2 (the same precondition): per coordinate
+// the largest double at most the exact value and the smallest at least it, one double when the
+// value is one. Exact (GMP), for the few nodes whose rounding the OGC layout must choose
+// (layout/node_rounding.h).
+struct CrossingRoundings {
+  double x0, x1, y0, y1;
+};
+CrossingRoundings crossingRoundings(Point p1, Point p2, Point q1, Point q2);
+
 // The same through the code compiled for the base instruction set (fma a library call), which
 // constructCrossing uses only on processors without fma: so that tests run it everywhere.
 Point constructCrossingWithoutFmaInstruction(Point p1, Point p2, Point q1, Point q2, ExactCounters& counters);

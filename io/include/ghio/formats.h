@@ -3,9 +3,10 @@
 // Readers pool every ring of every polygon into one region under the even-odd rule: OGC's
 // shell/hole structure is not needed (a hole is a ring inside another ring) and is not checked.
 // Writers emit a MultiPolygon in one of two layouts: `Ogc` (the default of the tools), polygons
-// with holes that GEOS calls valid (ogc_layout.h), or `Rings`, one polygon per ring, the raw
-// Greiner-Hormann rings, which only an even-odd reader reads right. Either reads back with these
-// readers as the same region. An empty answer is MULTIPOLYGON EMPTY / an empty MultiPolygon.
+// with holes as the library lays them out (ghclip/ogc_layout.h), or `Rings`, one polygon per ring,
+// the raw Greiner-Hormann rings, which only an even-odd reader reads right. Either reads back with
+// these readers as the same region. An empty answer is MULTIPOLYGON EMPTY / an empty MultiPolygon.
+// Every coordinate is written as the shortest text that reads back as the same double.
 // WKT may carry Z, M or ZM (ignored); untagged 3-number points are refused.
 // Bad text throws gh::InvalidInput with a one-line message.
 #pragma once
@@ -33,6 +34,9 @@ std::string writeWkt(const Region& region);  // one polygon per ring
 std::string writeGeoJson(const Region& region);
 std::string writeWkt(const std::vector<PolygonWithHoles>& polygons);
 std::string writeGeoJson(const std::vector<PolygonWithHoles>& polygons);
+std::string write(const std::vector<PolygonWithHoles>& polygons, Format format);
+// Rings: one polygon per ring; Ogc: the rings laid out by gh::ogcLayout (which knows nothing of
+// where they came from: a clip's own polygons, Clipping::polygons, are what the tools write).
 std::string write(const Region& region, Format format, Layout layout = Layout::Rings);
 // A FeatureCollection of two features, {"name": "subject"} and {"name": "clip"}.
 std::string writeGeoJsonPair(const Region& subject, const Region& clip);

@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "ghclip/lined_rings.h"
 #include "ghclip/operation.h"
 #include "ghclip/region.h"
 
@@ -117,6 +118,11 @@ std::vector<bool> symmetricDifferencesWithin(const std::vector<std::pair<Region,
 
 // The exact answer's boundary rings (points rounded to double: a faithful rounding).
 Region exactAnswer(const Region& subject, const Region& clip, Op op);
+
+// The same boundary as rings that know their lines (ghclip/lined_rings.h): every edge on a segment
+// of S or C, every corner an input double or the crossing of its two edges' lines (rounded to the
+// nearest double), for the OGC layout (ghclip/ogc_layout.h): what ghcheck --expected writes.
+LinedRings exactAnswerLines(const Region& subject, const Region& clip, Op op);
 
 // The exact even-odd area of a region, as a rational "p/q", and its rounding to double.
 struct ExactArea {

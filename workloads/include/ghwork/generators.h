@@ -45,7 +45,8 @@ const std::vector<std::string>& workloadNames();
 const std::vector<std::string>& variantSuffixes();
 
 // Generates "NAME" or "NAME+SUFFIX" with about n vertices per operand (at least what the shape
-// needs). Throws std::invalid_argument for an unknown name.
+// needs). Throws std::invalid_argument for an unknown name, and for a suffix that collapses a ring
+// of the workload (mixed-magnitude's small star near 1e-300 or at 1e9: below the doubles there).
 Workload generate(const std::string& name, std::size_t n, std::uint64_t seed);
 
 // The bitset behind a bitset-grid workload, for its exact answer.
