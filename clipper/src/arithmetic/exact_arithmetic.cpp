@@ -5,44 +5,12 @@
 #include <limits>
 
 #include "predicates/construction.h"
+#include "predicates/crossing_position.h"
 #include "predicates/difference_products.h"
 #include "predicates/orientation.h"
 #include "predicates/sos_predicates.h"
 
 namespace gh::detail {
-namespace {
-
-// The parameter t = w1 / (w1 - w2) along an edge whose endpoints have the determinants w1, w2
-// against the other edge's line (t is a crossing's position in the limit), with a certified bound
-// on its error: infinite when the determinants' bounds do not apply. Only called for crossing
-// edges, where the exact denominator is not 0.
-double certifiedRatio(FilteredDeterminant w1, FilteredDeterminant w2, double& err) {
-  constexpr double u = 0x1p-53;
-  const double d = w1.value - w2.value, inverse = 1 / d, t = w1.value * inverse;
-  const double ed = w1.bound + w2.bound + u * std::abs(d);
-  if (!(2 * ed <= std::abs(d)) || !std::isfinite(t)) {
-    err = std::numeric_limits<double>::infinity();
-    return t;
-  }
-  // |w1/d - t| <= (e1 + |t| ed) / (|d| - ed) <= 2 (e1 + |t| ed) / |d|, plus the roundings of 1/d
-  // and of the product; the last factor covers the rounding of this bound itself. (Loose by at
-  // most 2 against dividing by |d| - ed, and one division instead of three.)
-  err = (2 * (w1.bound + std::abs(t) * ed) * std::abs(inverse) + 3 * u * std::abs(t)) * (1 + 0x1p-20);
-  return t;
-}
-
-// The determinants of c and d against the line ab again, on the four points scaled towards 1
-// together (difference_products.h): near 1e-300 or 1e150 the products fall outside the filter's
-// range and the bounds are infinite, so every order along the edges would need the exact
-// predicates. No sign changes, nor the ratio of the pair (a crossing's position); orientation()
-// still falls back on the original points. Out of line: the usual path stays as it was.
-[[gnu::noinline]] void determinantsTowardsUnit(Point a, Point b, Point c, Point d, FilteredDeterminant& dc,
-                                               FilteredDeterminant& dd) {
-  scaleTowardsUnit(&a, &b, &c, &d);
-  dc = orientationDeterminant(a, b, c), dd = orientationDeterminant(a, b, d);
-}
-
-}  // namespace
 
 PairTest ExactArithmetic::test(const Operand& subject, std::uint32_t subjectEdge, const Operand& clip,
                                std::uint32_t clipEdge, Crossing& x, Extra& extra) const {

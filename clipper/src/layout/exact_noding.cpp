@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <utility>
 
 #include "ghclip/errors.h"
+#include "point_hash.h"
 #include "predicates/construction.h"
 #include "predicates/orientation.h"
 #include "predicates/point_on_line.h"
@@ -64,6 +67,7 @@ class Noder {
       lineA_.push_back(r_.exact[v] ? kNoLine : r_.line[prev_[v]]);
       lineB_.push_back(r_.exact[v] ? kNoLine : r_.line[v]);
     }
+    uniteByIdentity();
     orientEdges();
     findMeetings();
     return pieces();
@@ -130,6 +134,24 @@ class Noder {
     }
   }
 
+  // Vertices that are one point by their definition (one double, or the crossing of the same two
+  // lines: an answer's crossing where two of its rings meet, or traced twice by xor) are one node
+  // from the start.
+  void uniteByIdentity() {
+    std::unordered_map<std::uint64_t, std::uint32_t> crossings;
+    std::unordered_map<Point, std::uint32_t, PointHash> doubles;
+    for (std::uint32_t v = 0; v < r_.points.size(); ++v) {
+      if (r_.exact[v]) {
+        const auto [it, added] = doubles.emplace(r_.points[v], v);
+        if (!added) classes_.unite(it->second, v);
+        continue;
+      }
+      const std::uint32_t a = r_.line[prev_[v]], b = r_.line[v];
+      const auto [it, added] = crossings.emplace(std::uint64_t{std::min(a, b)} << 32 | std::max(a, b), v);
+      if (!added) classes_.unite(it->second, v);
+    }
+  }
+
   // direction_[e]: the order along its line of edge e's start and end (-1 when the edge runs from
   // the line's `from` towards its `to`), 0 for an edge of no length, whose ends are one node.
   void orientEdges() {
@@ -143,7 +165,14 @@ class Noder {
 
   // Where point u lies on edge e (on e's line): -2 outside, -1 at its start, +1 at its end, 0
   // strictly inside.
-  int place(std::uint32_t e, const PointOnLine& u) {
+  // `node`: u's node when it has one. Nodes known to be one point (classes_) are placed without a
+  // predicate: the ties of an exact comparison are its slowest answers.
+  int place(std::uint32_t e, const PointOnLine& u, std::uint32_t node = kNoLine) {
+    if (node != kNoLine) {
+      const std::uint32_t n = classes_.find(node);
+      if (n == classes_.find(e)) return -1;
+      if (n == classes_.find(next_[e])) return +1;
+    }
     const std::uint32_t l = r_.line[e];
     const int a = compare(l, onLine(e, l), u);
     if (a == 0) return -1;
@@ -180,18 +209,56 @@ class Noder {
     // Consecutive edges share a vertex; they meet elsewhere only when they fold back on one line.
     if ((next_[e] == f || next_[f] == e) && !parallelLines) return;
     if (!parallelLines) {
+      if (clearlyAside(e, f) || clearlyAside(f, e)) return;
       meetAtCrossing(e, f);
     } else if (le == lf || orientation(lineOf(le).from, lineOf(le).to, lineOf(lf).from, counters_) == Sign::Zero) {
       overlap(e, f), overlap(f, e);  // one line: each edge's ends that lie inside the other
     }
   }
 
-  // Edges on lines that cross: they meet, if at all, at the crossing X of their lines.
+  // Do both ends of edge f lie strictly on one side of edge e's line, by a margin that covers the
+  // rounding of f's ends (each exact vertex within an ulp of its double in each coordinate) and of
+  // the arithmetic (Shewchuk's stage A)? Then e and f do not meet, and no exact predicate is asked:
+  // on inputs whose edges all overlap in their boxes (the paper's random polygons, the fuzz
+  // targets' raw doubles) most candidate pairs end here.
+  bool clearlyAside(std::uint32_t e, std::uint32_t f) const {
+    const Line& l = lineOf(r_.line[e]);
+    const double dx = std::abs(l.to.x - l.from.x), dy = std::abs(l.to.y - l.from.y);
+    int side = 0;
+    for (const std::uint32_t v : {f, next_[f]}) {
+      const Point p = r_.points[v];
+      const FilteredDeterminant d = orientationDeterminant(l.from, l.to, p);
+      // |exact - p| <= 2^-52 |p| + 2^-1074 in each coordinate moves the determinant by at most that
+      // times the line's extent in the other coordinate; 2^-50 and 2^-1072 leave room for the
+      // rounding of this bound itself.
+      const double moved = r_.exact[v] ? 0 : (std::abs(p.x) * 0x1p-50 + 0x1p-1072) * dy + (std::abs(p.y) * 0x1p-50 + 0x1p-1072) * dx;
+      const double margin = (d.bound + moved) * (1 + 0x1p-20);
+      if (!(std::abs(d.value) > margin)) return false;  // also infinite bounds and NaN
+      const int s = d.value > 0 ? 1 : -1;
+      if (side != 0 && s != side) return false;
+      side = s;
+    }
+    return true;
+  }
+
+  // Edges on lines that cross: they meet, if at all, at the crossing X of their lines. Where an end
+  // of one line lies on the other, X is that double (degenerate inputs: edges through one input
+  // vertex), and every comparison with it is an orientation of doubles instead of an order of
+  // crossings, whose ties would need exact arithmetic to show.
   void meetAtCrossing(std::uint32_t e, std::uint32_t f) {
     const Line &le = lineOf(r_.line[e]), &lf = lineOf(r_.line[f]);
-    const int onE = place(e, PointOnLine::crossingWith(lf.from, lf.to));
+    std::optional<Point> atDouble;
+    for (const auto& [on, end] : {std::pair{&le, lf.from}, std::pair{&le, lf.to}, std::pair{&lf, le.from}, std::pair{&lf, le.to}}) {
+      if (orientation(on->from, on->to, end, counters_) == Sign::Zero) {
+        atDouble = end;
+        break;
+      }
+    }
+    const PointOnLine onLe = atDouble ? PointOnLine::exact(*atDouble) : PointOnLine::crossingWith(lf.from, lf.to);
+    const int onE = place(e, onLe);
     if (onE == -2) return;
-    const int onF = place(f, PointOnLine::crossingWith(le.from, le.to));
+    const PointOnLine onLf = atDouble ? PointOnLine::exact(*atDouble) : PointOnLine::crossingWith(le.from, le.to);
+    const int onF = place(f, onLf);
     if (onF == -2) return;
     std::uint32_t node;
     if (onE != 0 && onF != 0) {
@@ -202,11 +269,13 @@ class Noder {
       node = endNode(e, onE);
     } else if (onF != 0) {
       node = endNode(f, onF);
+    } else if (atDouble) {
+      node = exactNode(*atDouble);
     } else {
       node = newNode(r_.line[e], r_.line[f]);
     }
-    if (onE == 0) splits_.push_back({e, node, PointOnLine::crossingWith(lf.from, lf.to)});
-    if (onF == 0) splits_.push_back({f, node, PointOnLine::crossingWith(le.from, le.to)});
+    if (onE == 0) splits_.push_back({e, node, onLe});
+    if (onF == 0) splits_.push_back({f, node, onLf});
   }
 
   // Edges e and f on one line: f's ends that lie on e.
@@ -214,13 +283,21 @@ class Noder {
     const std::uint32_t l = r_.line[e];
     for (const std::uint32_t v : {f, next_[f]}) {
       const PointOnLine at = onLine(v, l);
-      const int where = place(e, at);
+      const int where = place(e, at, v);
       if (where == 0) {
         splits_.push_back({e, v, at});
       } else if (where != -2) {
         classes_.unite(v, endNode(e, where));
       }
     }
+  }
+
+  // A node at a double that is no vertex of the rings (an input vertex another edge passes through).
+  std::uint32_t exactNode(Point p) {
+    classes_.add(true);
+    rounded_.push_back(p);
+    lineA_.push_back(kNoLine), lineB_.push_back(kNoLine);
+    return static_cast<std::uint32_t>(classes_.size() - 1);
   }
 
   std::uint32_t newNode(std::uint32_t a, std::uint32_t b) {
@@ -241,7 +318,8 @@ class Noder {
     });
     for (std::size_t i = 1; i < splits_.size(); ++i) {
       const Split &s = splits_[i - 1], &t = splits_[i];
-      if (s.edge == t.edge && compare(r_.line[s.edge], s.at, t.at) == 0) classes_.unite(s.node, t.node);
+      if (s.edge != t.edge || classes_.find(s.node) == classes_.find(t.node)) continue;
+      if (compare(r_.line[s.edge], s.at, t.at) == 0) classes_.unite(s.node, t.node);
     }
     std::vector<Piece> raw;
     raw.reserve(r_.points.size() + splits_.size());

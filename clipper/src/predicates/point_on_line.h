@@ -6,6 +6,7 @@
 
 #include "ghclip/region.h"
 #include "predicates/crossing_order.h"
+#include "predicates/crossing_position.h"
 #include "predicates/exact_counters.h"
 #include "predicates/orientation.h"
 
@@ -23,6 +24,14 @@ struct PointOnLine {
 // The order of u and v along the line from a1 to a2 (a1 != a2), both on it: -1 when u comes first,
 // +1 when v does, 0 when they are one point.
 inline int compareOnLine(Point a1, Point a2, const PointOnLine& u, const PointOnLine& v, ExactCounters& counters) {
+  // Certified positions along the line first (crossing_position.h): disjoint intervals decide.
+  if (u.crossing || v.crossing) {
+    double eu, ev;
+    const double tu = u.crossing ? crossingPosition(a1, a2, u.m1, u.m2, eu) : pointPosition(a1, a2, u.at, eu);
+    const double tv = v.crossing ? crossingPosition(a1, a2, v.m1, v.m2, ev) : pointPosition(a1, a2, v.at, ev);
+    if (tu + eu < tv - ev) return -1;
+    if (tv + ev < tu - eu) return 1;
+  }
   // A double p against the crossing with M: orient(M, a(t)) is affine in t and vanishes at t_M, so
   // sign(t_p - t_M) = orient(m1, m2, p) * sign((m2 - m1) x (a2 - a1)).
   auto doubleAgainstCrossing = [&](Point p, Point m1, Point m2) {
