@@ -23,6 +23,7 @@
 #include "common/shard.h"
 #include "ghclip/errors.h"
 #include "ghclip/measure.h"
+#include "ghclip/ogc_layout.h"
 #include "ghio/formats.h"
 #include "ghio/svg.h"
 #include "ghoracle/exact_oracle.h"
@@ -457,7 +458,17 @@ int run(int argc, char** argv) {
         if (f.verdict == Verdict::Beyond || f.verdict == Verdict::Gross) wkt << ", relative error area " << fmt(f.relative, 3);
         wkt << "\n# subject\n" << io::writeWkt(f.subject) << "\n# clip\n" << io::writeWkt(f.clip) << "\n";
         if (!f.result.empty() || f.verdict == Verdict::Beyond || f.verdict == Verdict::Gross) {
-          wkt << "# result\n" << io::writeWkt(f.result) << "\n";
+          wkt << "# result (" << m.name << "'s answer as it gave it)\n" << io::writeWkt(f.result) << "\n";
+        }
+        // The exact answer as `ghcheck --expected` writes it (the OGC layout of the oracle's answer),
+        // judged as written like every answer a tool writes.
+        try {
+          const std::string expected = io::writeWkt(ogcLayout(oracle::exactAnswerLines(f.subject, f.clip, op)));
+          const bool right = oracle::exactCheck(f.subject, f.clip, op, io::readWkt(expected), {false, false, false}).pass;
+          wkt << "# expected (ghcheck --expected: the exact answer, OGC layout" << (right ? "" : "; FAILS the exact oracle")
+              << ")\n" << expected << "\n";
+        } catch (const std::exception& e) {
+          wkt << "# expected: not written (" << e.what() << ")\n";
         }
         io::writeText((dir / (id + ".wkt")).string(), wkt.str());
         std::vector<io::SvgLayer> layers{{&f.subject, "#c6dbef", "#2171b5", "subject"},
@@ -563,7 +574,9 @@ int run(int argc, char** argv) {
      << markdown(provenance(argc, argv)) << "\n"
      << cases << " seeded cases per input class (seeds 1.." << cases << "), each with all five operations, "
      << "each method run in a worker process (replaced when it crashes; killed after " << timeout << " s on one case; 8 GiB address space); "
-     << "every answer judged by the exact CGAL-arrangement oracle. The study took " << fmt(seconds, 3) << " s.\n\n"
+     << "every answer judged by the exact CGAL-arrangement oracle: our variants' as ghclip writes them (the OGC "
+        "layout as WKT, read back), the peers' as they give them. The study took "
+     << fmt(seconds, 3) << " s.\n\n"
      << "**Cells**: share of correct answers (error area exactly 0, or every wrong face inside the rounding "
         "zones of the exact answer: each constructed vertex may be either double around its exact crossing, "
         "input vertices may not move; see the README's *Judges*), then the count of each other outcome: "

@@ -17,7 +17,8 @@ struct Method {
   std::function<Region(const Region&, const Region&, Op)> clip;
 };
 
-// Our implemented variants first, then the peers.
+// Our implemented variants first (their answers as written: the OGC layout as WKT, read back),
+// then the peers (their answers as they give them).
 std::vector<Method> allMethods();
 
 // How one answer fared against the exact oracle.
