@@ -65,7 +65,7 @@ int run(int argc, char** argv) {
   app.add_option("-o,--output", outPath, "result file ('-' = stdout)")->capture_default_str();
   app.add_option("--format", formatName, "output format: wkt | geojson")->capture_default_str();
   app.add_option("--layout", layoutName,
-                 "ogc (polygons with holes that GEOS calls valid: what GIS tools read) | rings (one polygon per raw "
+                 "ogc (valid OGC polygons with holes, exact: what GIS tools read) | rings (one polygon per raw "
                  "Greiner-Hormann ring: only an even-odd reader reads it right)")
       ->capture_default_str();
   app.add_option("--svg", svgPath, "also draw subject, clip and result to this SVG file");
