@@ -39,10 +39,11 @@ struct Variant_ {
 };
 const Variant_ kVariants[] = {{"naive", Variant::Naive}, {"exact", Variant::Exact}};
 
-// A pinned input with its answers (computed once, for the judges' stages).
+// A pinned input with its answers (computed once, for the judges' stages), and for the exact
+// variant its answers as written (the OGC layout), which the target judges too.
 struct Execution {
   fuzz::Pair pair;
-  std::vector<std::pair<Op, Region>> answers;
+  std::vector<std::pair<Op, Region>> answers, written;
 };
 
 // The pinned inputs a variant does not refuse, with its five answers (those it gives).
@@ -52,9 +53,9 @@ std::vector<Execution> executions(Variant variant) {
   std::vector<Execution> out;
   for (const fuzz::JudgePin& pin : pins) {
     const auto bytes = fuzz::bytesOfHex(pin.hex);
-    Execution e{fuzz::clipPair(bytes.data(), bytes.size()), {}};
+    Execution e{fuzz::clipPair(bytes.data(), bytes.size()), {}, {}};
     fuzz::ClipOutcome outcome;
-    e.answers = fuzz::clipFive(e.pair, variant, outcome);
+    e.answers = fuzz::clipFive(e.pair, variant, outcome, variant == Variant::Exact ? &e.written : nullptr);
     if (outcome.refused) continue;
     out.push_back(std::move(e));
   }
@@ -73,7 +74,8 @@ void clipStage(benchmark::State& s, Variant variant) {
   for (auto _ : s) {
     for (const Execution& e : all) {
       fuzz::ClipOutcome outcome;
-      benchmark::DoNotOptimize(fuzz::clipFive(e.pair, variant, outcome));
+      std::vector<std::pair<Op, Region>> written;
+      benchmark::DoNotOptimize(fuzz::clipFive(e.pair, variant, outcome, variant == Variant::Exact ? &written : nullptr));
     }
   }
   s.counters["executions"] = static_cast<double>(all.size());
@@ -129,7 +131,8 @@ void certificateStage(benchmark::State& s, Variant variant) {
 }
 
 // The judges as the target runs them (fuzz::judgeFive): the invariants, then the certificate for
-// the exact variant and the sampling oracle where it does not prove all five.
+// the exact variant and the sampling oracle where it does not prove all five; for the exact
+// variant on its answers as written too.
 void targetJudgesStage(benchmark::State& s, Variant variant) {
   const auto& all = executionsOf(variant);
   for (auto _ : s) {
@@ -137,6 +140,7 @@ void targetJudgesStage(benchmark::State& s, Variant variant) {
       if (e.answers.empty()) continue;
       fuzz::ClipOutcome outcome;
       fuzz::judgeFive(e.pair, variant, e.answers, outcome);
+      if (!e.written.empty()) fuzz::judgeFive(e.pair, variant, e.written, outcome, "written answer: ");
       benchmark::DoNotOptimize(outcome);
     }
   }
@@ -175,7 +179,8 @@ int run(int argc, char** argv) {
      << markdown(provenance(argc, argv)) << "\n"
      << "The fuzz inputs pinned by `tests/golden/judge_verdicts.golden` (the clip targets' seeds, "
         "regressions and grown corpora), those the variant does not refuse; per execution, the five "
-        "operations clipped (`Clipping`, as the targets do), the invariants on the five answers, and "
+        "operations clipped (`Clipping`, as the targets do; for the exact variant each laid out as written "
+        "too, the OGC layout checked valid), the invariants on the five answers, and "
         "the sampling oracle on the five at once with the targets' options (200 uniform points, "
         "stop when every answer has failed: `fuzz/clip_target.h`). Release build, no sanitizers; "
         "each timed iteration runs one stage over every input; "
@@ -184,7 +189,7 @@ int run(int argc, char** argv) {
         "certificate (`ghoracle/boundary_certificate.h`) on the five answers at once, and the "
         "executions whose five it proves; the target's judges: the invariants, then for the exact "
         "variant the certificate, and the sampling oracle where it does not prove all five "
-        "(`fuzz::judgeFive`). A fuzz target's executions also pay ASan and UBSan on the clip, "
+        "(`fuzz::judgeFive`), for the exact variant on its answers as written too. A fuzz target's executions also pay ASan and UBSan on the clip, "
         "libFuzzer and fork mode (`./harness fuzz` reports what they reach).\n\n"
      << "| variant | executions | clip µs | invariants µs | sampling oracle µs | certificate µs | proved "
         "| the target's judges µs | its judges / clip | points per answer | answers failed |\n"

@@ -1,6 +1,8 @@
 // The body of fuzz_clip_<variant>: all five operations on a fuzzed pair; no crash, no hang, no
 // leak (sanitizers), finite output, the cheap invariants, and the sampling oracle agrees (or, for
-// the exact variant, the boundary certificate proves what it would find: nothing).
+// the exact variant, the boundary certificate proves what it would find: nothing). The exact
+// variant's answers are judged as written too (docs/semantics.md): the OGC layout of each, which
+// must be valid OGC (decided exactly) and pass the same judges.
 // For the exact variant any disagreement traps; for naive and sweep it is recorded, and only
 // crashes, hangs and non-finite output stop the campaign.
 #pragma once
@@ -18,8 +20,11 @@
 #include "ghclip/clip.h"
 #include "ghclip/clipping.h"
 #include "ghclip/errors.h"
+#include "ghclip/ogc_layout.h"
+#include "ghclip/ogc_validity.h"
 #include "ghoracle/boundary_certificate.h"
 #include "ghoracle/invariants.h"
+#include "ghoracle/same_boundary.h"
 #include "ghoracle/sampling_oracle.h"
 
 namespace gh::fuzz {
@@ -33,7 +38,7 @@ inline ProblemKey clipProblem(const std::uint8_t* data, std::size_t size) {
 
 // What a clip target finds on one pair, every judge run: per operation, in the order found.
 struct ClipFinding {
-  enum class Kind { ClipFailure, NonFinite, Invariant, Sampling };
+  enum class Kind { ClipFailure, NonFinite, Invariant, Sampling, Layout };
   Op op;
   Kind kind;
   std::string what;  // as a trap or a record names it
@@ -55,8 +60,12 @@ inline oracle::SampleOptions clipTargetSampling() {
 
 // The five operations on a pair as the clip targets clip them, phases 1 and 2 once (clipping.h:
 // each answer is clip()'s, bit for bit): the answers given, each ClipFailure and non-finite answer
-// added to outcome's findings, and outcome.refused on InvalidInput.
-inline std::vector<std::pair<Op, Region>> clipFive(const Pair& p, Variant variant, ClipOutcome& outcome) {
+// added to outcome's findings, and outcome.refused on InvalidInput. With `written`, also each
+// answer as written (the OGC layout's rings), a refused or invalid layout a finding; only those
+// whose boundary mod 2 is not the answer's own, segment for segment (most are its rings
+// reordered, reoriented and regrouped: the same interior exactly, judged with the rings).
+inline std::vector<std::pair<Op, Region>> clipFive(const Pair& p, Variant variant, ClipOutcome& outcome,
+                                                   std::vector<std::pair<Op, Region>>* written = nullptr) {
   using Kind = ClipFinding::Kind;
   std::vector<std::pair<Op, Region>> answers;
   std::optional<Clipping> clipping;
@@ -80,6 +89,17 @@ inline std::vector<std::pair<Op, Region>> clipFive(const Pair& p, Variant varian
       return std::all_of(ring.begin(), ring.end(), [](const Point& q) { return std::isfinite(q.x) && std::isfinite(q.y); });
     });
     if (!finite) outcome.findings.push_back({op, Kind::NonFinite, "non-finite output"});
+    if (!written) continue;
+    try {
+      const std::vector<PolygonWithHoles> polygons = clipping->polygons(op);
+      if (const auto invalid = ogcInvalidity(polygons)) {
+        outcome.findings.push_back({op, Kind::Layout, "written answer not valid OGC: " + *invalid});
+      }
+      Region asWritten = toRegion(polygons);
+      if (!oracle::sameBoundaryModTwo(answers.back().second, asWritten)) written->emplace_back(op, std::move(asWritten));
+    } catch (const LayoutRefusal& e) {
+      outcome.findings.push_back({op, Kind::Layout, std::string("layout refused: ") + e.what()});
+    }
   }
   return answers;
 }
@@ -87,13 +107,15 @@ inline std::vector<std::pair<Op, Region>> clipFive(const Pair& p, Variant varian
 // The judges the clip targets run on the answers clipFive gave, each finding added to outcome's:
 // the cheap invariants, then the boundary certificate (exact variant) and, unless it proves all
 // five answers, the sampling oracle on the five at once.
-inline void judgeFive(const Pair& p, Variant variant, const std::vector<std::pair<Op, Region>>& answers, ClipOutcome& outcome) {
+// `which` prefixes each finding's message ("written answer: " for the answers as written).
+inline void judgeFive(const Pair& p, Variant variant, const std::vector<std::pair<Op, Region>>& answers, ClipOutcome& outcome,
+                      const std::string& which = "") {
   using Kind = ClipFinding::Kind;
   const JudgeHeap heap;  // the clips ran outside it
   const oracle::InvariantJudge invariants(p.subject, p.clip);
   for (const auto& [op, r] : answers) {
     const auto violations = invariants.violations(op, r);
-    if (!violations.empty()) outcome.findings.push_back({op, Kind::Invariant, "invariant: " + violations.front()});
+    if (!violations.empty()) outcome.findings.push_back({op, Kind::Invariant, which + "invariant: " + violations.front()});
   }
   std::vector<std::pair<Op, const Region*>> judged;
   for (const auto& [op, r] : answers) judged.emplace_back(op, &r);
@@ -109,7 +131,7 @@ inline void judgeFive(const Pair& p, Variant variant, const std::vector<std::pai
   // the same face, and at the points of the others (sampling_oracle.h).
   const auto verdicts = oracle::SamplingJudge(p.subject, p.clip, clipTargetSampling()).check(judged);
   for (std::size_t i = 0; i < answers.size(); ++i) {
-    if (!verdicts[i].pass()) outcome.findings.push_back({answers[i].first, Kind::Sampling, "sampling oracle disagrees"});
+    if (!verdicts[i].pass()) outcome.findings.push_back({answers[i].first, Kind::Sampling, which + "sampling oracle disagrees"});
   }
 }
 
@@ -118,12 +140,15 @@ inline void judgeFive(const Pair& p, Variant variant, const std::vector<std::pai
 // committed inputs, so that a faster judge is shown to find the same.
 inline ClipOutcome clipAndJudge(const Pair& p, Variant variant) {
   ClipOutcome outcome;
-  const std::vector<std::pair<Op, Region>> answers = clipFive(p, variant, outcome);
+  std::vector<std::pair<Op, Region>> written;
+  const std::vector<std::pair<Op, Region>> answers =
+      clipFive(p, variant, outcome, variant == Variant::Exact ? &written : nullptr);
   if (answers.empty()) return outcome;
 #ifdef GHCLIP_FUZZ_UNJUDGED
   return outcome;  // the ceiling: what an execution costs before any judge (fuzz/CMakeLists.txt)
 #endif
   judgeFive(p, variant, answers, outcome);
+  if (!written.empty()) judgeFive(p, variant, written, outcome, "written answer: ");
   return outcome;
 }
 

@@ -45,6 +45,7 @@ std::string verdictOf(const Bytes& input, Variant variant) {
         case ClipFinding::Kind::NonFinite: letters += 'N'; break;
         case ClipFinding::Kind::Invariant: letters += 'I'; break;
         case ClipFinding::Kind::Sampling: letters += 'S'; break;
+        case ClipFinding::Kind::Layout: letters += 'L'; break;
       }
     }
     if (!out.empty()) out += ',';
