@@ -86,6 +86,7 @@ int run(int argc, char** argv) {
   if (oracleName == "exact") {
     gh::oracle::ExactOptions options;
     options.constructionUlps = ulps;
+    options.exactAreas = true;
     const auto v = gh::oracle::exactCheck(subject, clip, *op, result, options);
     pass = v.pass;
     std::cout << (json ? gh::tools::verdictJson(v).dump() + "\n" : gh::tools::verdictText(v));

@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -251,6 +253,18 @@ KPoint pointInside(Face f) {
 
 std::pair<double, double> roundingInterval(const FT& v, int k, int ulps);  // below
 
+// The double nearest to an exact rational (ties to the lower): what the tools print of an area.
+// (CGAL::to_double of a rational truncates.)
+double nearestOf(const EFT& v) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double lo = CGAL::to_double(v);
+  while (EFT(lo) > v) lo = std::nextafter(lo, -inf);
+  while (EFT(std::nextafter(lo, inf)) <= v) lo = std::nextafter(lo, inf);
+  if (EFT(lo) == v) return lo;
+  const double hi = std::nextafter(lo, inf);
+  return v - EFT(lo) <= EFT(hi) - v ? lo : hi;
+}
+
 // The double nearest to an exact number (ties to the lower): a faithful rounding, which the
 // interval approximation's midpoint (CGAL::to_double of a lazy number) need not be.
 double nearestDouble(const FT& v) {
@@ -322,6 +336,26 @@ EFT powerOfTwo(int e) {
   return p * EFT(std::ldexp(1.0, e));
 }
 
+// The doubles in order as integers (both zeros 0, -denorm_min -1): n doubles away from x is
+// n away here, whatever binades or the sign it crosses. NaN never comes here.
+std::int64_t doubleIndex(double x) {
+  std::int64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits >= 0 ? bits : std::numeric_limits<std::int64_t>::min() - bits;
+}
+double doubleAtIndex(std::int64_t i) {
+  const std::int64_t bits = i >= 0 ? i : std::numeric_limits<std::int64_t>::min() - i;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+// x moved by n doubles (n may be negative), stopping at the largest finite ones: O(1) for any n
+// (`--ulps 1048576` took a million nextafter calls per coordinate).
+double stepDoubles(double x, std::int64_t n) {
+  const std::int64_t most = doubleIndex(std::numeric_limits<double>::max());
+  return doubleAtIndex(std::clamp(doubleIndex(x) + n, -most, most));
+}
+
 // The doubles a coordinate may round to: [lo, hi] with lo the largest double <= v and hi the
 // smallest >= v (equal when v is a double), widened by ulps - 1 doubles on each side. Computed
 // at the original scale (v * 2^-k: the judge works on a copy scaled by 2^k), returned scaled.
@@ -339,9 +373,7 @@ std::pair<double, double> roundingInterval(const FT& v, int k, int ulps) {
     while (EFT(std::nextafter(lo, inf)) <= exact) lo = std::nextafter(lo, inf);
     hi = EFT(lo) == exact ? lo : std::nextafter(lo, inf);
   }
-  for (int i = 1; i < ulps; ++i) lo = std::nextafter(lo, -inf), hi = std::nextafter(hi, inf);
-  lo = std::max(lo, std::numeric_limits<double>::lowest());
-  hi = std::min(hi, std::numeric_limits<double>::max());
+  lo = stepDoubles(lo, -(ulps - 1)), hi = stepDoubles(hi, ulps - 1);
   if (k == 0) return {lo, hi};
   // Back to the judging scale, rounded outward (exact unless the scaled value is subnormal).
   double slo = std::ldexp(lo, k), shi = std::ldexp(hi, k);
@@ -612,10 +644,30 @@ void finish(AnswerJudgement& a, const Arrangement& arr, Op op, std::size_t j, co
     EFT beyondExact = 0, roundingExact = 0;
     for (Face f : beyond) beyondExact += faceArea(f);
     for (Face f : rounding) roundingExact += faceArea(f);
-    v.errorArea = CGAL::to_double(beyondExact + roundingExact);
-    v.beyondRoundingArea = CGAL::to_double(beyondExact);
+    v.errorArea = nearestOf(beyondExact + roundingExact);
+    v.beyondRoundingArea = nearestOf(beyondExact);
     v.errorAreaExact = rationalText((beyondExact + roundingExact) * toOriginal);
     v.beyondRoundingAreaExact = rationalText(beyondExact * toOriginal);
+  }
+  if (options.exactAreas) {
+    // Each area the exact rational rounded once (a midpoint of an interval can be off by far
+    // more than an ulp where slivers widen it).
+    EFT expected = 0, got = 0, areaS = 0, areaC = 0;
+    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+      if (f->is_unbounded()) continue;
+      const unsigned bits = f->data().bits;
+      const bool want = expectedInside(op, bits), have = resultInside(bits, j);
+      if (!want && !have && !(bits & (kS | kC))) continue;
+      const EFT area = faceArea(f);
+      if (bits & kS) areaS += area;
+      if (bits & kC) areaC += area;
+      if (want) expected += area;
+      if (have) got += area;
+    }
+    v.expectedArea = nearestOf(expected);
+    v.resultArea = nearestOf(got);
+    v.subjectArea = nearestOf(areaS);
+    v.clipArea = nearestOf(areaC);
   }
   if (witnessFace) {
     const KPoint w = pointInside(*witnessFace);

@@ -79,6 +79,9 @@ struct ExactOptions {
   // Sum the wrong faces in exact rationals (errorAreaExact, beyondRoundingAreaExact). Without it
   // the areas are midpoints of certified intervals; the verdict is exact either way.
   bool exactErrorArea = true;
+  // The expected, result and operand areas summed in exact rationals too, each rounded once
+  // (what the tools print); without it they are midpoints of certified intervals.
+  bool exactAreas = false;
   // How far a constructed vertex may be from its exact crossing: 1 = a faithful rounding (each
   // coordinate one of the two doubles around the exact one); k > 1 widens that by k - 1 ulps of
   // the coordinate itself on each side.
