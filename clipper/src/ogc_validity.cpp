@@ -192,7 +192,7 @@ class Validity {
   // touch may form no cycle (its interior would fall apart).
   std::optional<std::string> touches() {
     const detail::Operand& op = *ops_;
-    std::sort(touches_.begin(), touches_.end(), [](const Touch& s, const Touch& t) { return lexLess(s.at, t.at); });
+    std::stable_sort(touches_.begin(), touches_.end(), [](const Touch& s, const Touch& t) { return lexLess(s.at, t.at); });
     std::vector<std::uint32_t> parent(op.ringCount());
     std::iota(parent.begin(), parent.end(), 0u);
     auto find = [&](std::uint32_t r) {

@@ -5,7 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
+#include <tuple>
 #include <utility>
 
 #include "ghclip/errors.h"
@@ -138,17 +138,26 @@ class Noder {
   // lines: an answer's crossing where two of its rings meet, or traced twice by xor) are one node
   // from the start.
   void uniteByIdentity() {
-    std::unordered_map<std::uint64_t, std::uint32_t> crossings;
-    std::unordered_map<Point, std::uint32_t, PointHash> doubles;
+    // By sorting (a hash map's allocations and rehashes cost more at a million vertices).
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> crossings;
+    std::vector<std::pair<Point, std::uint32_t>> doubles;
     for (std::uint32_t v = 0; v < r_.points.size(); ++v) {
       if (r_.exact[v]) {
-        const auto [it, added] = doubles.emplace(r_.points[v], v);
-        if (!added) classes_.unite(it->second, v);
+        doubles.emplace_back(r_.points[v], v);
         continue;
       }
       const std::uint32_t a = r_.line[prev_[v]], b = r_.line[v];
-      const auto [it, added] = crossings.emplace(std::uint64_t{std::min(a, b)} << 32 | std::max(a, b), v);
-      if (!added) classes_.unite(it->second, v);
+      crossings.emplace_back(std::uint64_t{std::min(a, b)} << 32 | std::max(a, b), v);
+    }
+    std::sort(crossings.begin(), crossings.end());
+    for (std::size_t i = 1; i < crossings.size(); ++i) {
+      if (crossings[i].first == crossings[i - 1].first) classes_.unite(crossings[i - 1].second, crossings[i].second);
+    }
+    std::stable_sort(doubles.begin(), doubles.end(), [](const auto& p, const auto& q) {
+      return std::tie(p.first.x, p.first.y, p.second) < std::tie(q.first.x, q.first.y, q.second);
+    });
+    for (std::size_t i = 1; i < doubles.size(); ++i) {
+      if (doubles[i].first == doubles[i - 1].first) classes_.unite(doubles[i - 1].second, doubles[i].second);
     }
   }
 
@@ -348,7 +357,7 @@ class Noder {
 
   NodedBoundary evenOdd(std::vector<Piece> raw) {
     // Copies of one piece (the same two nodes: the same segment) cancel in pairs.
-    std::sort(raw.begin(), raw.end(), [](const Piece& a, const Piece& b) { return a.key() < b.key(); });
+    std::stable_sort(raw.begin(), raw.end(), [](const Piece& a, const Piece& b) { return a.key() < b.key(); });
     std::vector<Piece> kept;
     for (std::size_t i = 0, j; i < raw.size(); i = j) {
       for (j = i + 1; j < raw.size() && raw[j].key() == raw[i].key(); ++j) {

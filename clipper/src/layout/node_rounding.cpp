@@ -1,15 +1,14 @@
 #include "layout/node_rounding.h"
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <memory>
 #include <optional>
 #include <sstream>
-#include <unordered_map>
 
 #include "ghclip/ogc_layout.h"
 #include "layout/snap_rounding.h"
-#include "point_hash.h"
 #include "predicates/construction.h"
 #include "predicates/orientation.h"
 #include "predicates/segment_meeting.h"
@@ -197,22 +196,43 @@ bool meetWrongly(Point a, Point b, Point c, Point d, ExactCounters& counters) {
   return meeting(a, b, c, d, counters) != Meeting::Disjoint;
 }
 
+namespace {
+bool lexLess(Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+}  // namespace
+
 PlaneGraph planeGraph(const std::vector<std::pair<Point, Point>>& segments) {
+  // The distinct ends by sorting (numbered in order of first appearance), not by a hash map:
+  // with a million segments the map's allocations and rehashes were a tenth of the layout.
   PlaneGraph g;
-  std::unordered_map<Point, std::uint32_t, PointHash> vertexAt;
-  vertexAt.reserve(segments.size());
-  auto vertex = [&](Point q) {
-    const auto [it, added] = vertexAt.emplace(q, static_cast<std::uint32_t>(g.vertices.size()));
-    if (added) g.vertices.push_back(q);
-    return it->second;
-  };
+  std::vector<std::pair<Point, std::uint32_t>> ends;  // (end, 2k or 2k + 1)
+  ends.reserve(2 * segments.size());
+  for (std::uint32_t k = 0; k < segments.size(); ++k) {
+    ends.emplace_back(segments[k].first, 2 * k);
+    ends.emplace_back(segments[k].second, 2 * k + 1);
+  }
+  std::stable_sort(ends.begin(), ends.end(), [](const auto& p, const auto& q) {
+    return std::tie(p.first.x, p.first.y, p.second) < std::tie(q.first.x, q.first.y, q.second);
+  });
+  std::vector<std::uint32_t> firstOf(ends.size());  // each end's first appearance among equal ends
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    firstOf[ends[i].second] = i > 0 && ends[i].first == ends[i - 1].first ? firstOf[ends[i - 1].second] : ends[i].second;
+  }
+  std::vector<std::uint32_t> vertexOf(ends.size(), 0xffffffffu);
+  for (std::uint32_t i = 0; i < vertexOf.size(); ++i) {
+    if (firstOf[i] == i) {
+      vertexOf[i] = static_cast<std::uint32_t>(g.vertices.size());
+      g.vertices.push_back(i % 2 == 0 ? segments[i / 2].first : segments[i / 2].second);
+    } else {
+      vertexOf[i] = vertexOf[firstOf[i]];
+    }
+  }
   std::vector<std::uint64_t> keys;
   keys.reserve(segments.size());
-  for (const auto& [a, b] : segments) {
-    const std::uint32_t u = vertex(a), v = vertex(b);
+  for (std::uint32_t k = 0; k < segments.size(); ++k) {
+    const std::uint32_t u = vertexOf[2 * k], v = vertexOf[2 * k + 1];
     if (u != v) keys.push_back(std::uint64_t{std::min(u, v)} << 32 | std::max(u, v));
   }
-  std::sort(keys.begin(), keys.end());
+  std::stable_sort(keys.begin(), keys.end());
   for (std::size_t i = 0, j; i < keys.size(); i = j) {
     for (j = i + 1; j < keys.size() && keys[j] == keys[i]; ++j) {
     }
@@ -222,10 +242,10 @@ PlaneGraph planeGraph(const std::vector<std::pair<Point, Point>>& segments) {
 }
 
 std::uint64_t mergedNodes(const std::vector<Point>& positions) {
-  std::unordered_map<Point, char, PointHash> seen;
-  seen.reserve(positions.size());
+  std::vector<Point> sorted = positions;
+  std::stable_sort(sorted.begin(), sorted.end(), lexLess);
   std::uint64_t merged = 0;
-  for (const Point p : positions) merged += !seen.emplace(p, 0).second;
+  for (std::size_t i = 1; i < sorted.size(); ++i) merged += sorted[i] == sorted[i - 1];
   return merged;
 }
 

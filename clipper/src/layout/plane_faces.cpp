@@ -38,7 +38,7 @@ class Faces {
     rank_.resize(g_.vertices.size());
     byRank_.resize(g_.vertices.size());
     std::iota(byRank_.begin(), byRank_.end(), 0u);
-    std::sort(byRank_.begin(), byRank_.end(), [&](std::uint32_t a, std::uint32_t b) { return lexLess(at(a), at(b)); });
+    std::stable_sort(byRank_.begin(), byRank_.end(), [&](std::uint32_t a, std::uint32_t b) { return lexLess(at(a), at(b)); });
     for (std::uint32_t r = 0; r < byRank_.size(); ++r) rank_[byRank_[r]] = r;
     left_.resize(edgeCount()), right_.resize(edgeCount());
     for (std::uint32_t e = 0; e < edgeCount(); ++e) {

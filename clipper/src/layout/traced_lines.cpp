@@ -1,9 +1,8 @@
 #include "layout/traced_lines.h"
 
-#include <unordered_map>
+#include <algorithm>
 
 #include "phase3_tracing.h"
-#include "point_hash.h"
 #include "predicates/orientation.h"
 
 namespace gh::detail {
@@ -20,27 +19,45 @@ LinedRings tracedLines(const FlatRings& traced, const std::vector<std::uint32_t>
   // point by definition (exact_noding.h need not compare them).
   const std::uint32_t subjectEdges = static_cast<std::uint32_t>(subject.size());
   std::vector<std::uint32_t> lineOfEdge(subject.size() + clip.size(), 0xffffffffu);
-  std::unordered_map<Point, std::vector<std::uint32_t>, PointHash> linesFrom;  // by the smaller end
   auto lexLess = [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+  // The edges in order of first use, then sorted by their ends (a sort, not a hash map of
+  // vectors: a million edges' worth of small allocations was a fifth of the layout's time).
+  struct Use {
+    Point lo, hi;
+    std::uint32_t edge, order;
+  };
+  std::vector<Use> uses;
   for (std::size_t k = 0; k < lines.size(); ++k) {
     const std::uint32_t edge = lines[k] & ~kTracedCrossing;
-    if (lineOfEdge[edge] == 0xffffffffu) {
-      const Operand& op = edge < subjectEdges ? subject : clip;
-      const std::uint32_t e = edge < subjectEdges ? edge : edge - subjectEdges;
-      const Point a = op.from(e), b = op.to(e), lo = lexLess(a, b) ? a : b, hi = lexLess(a, b) ? b : a;
-      std::vector<std::uint32_t>& same = linesFrom[lo];
-      for (const std::uint32_t l : same) {
-        const LinedRings::Line& m = out.lines[l];
-        if ((m.from == lo && m.to == hi) || (m.from == hi && m.to == lo)) lineOfEdge[edge] = l;
-      }
-      if (lineOfEdge[edge] == 0xffffffffu) {
-        lineOfEdge[edge] = static_cast<std::uint32_t>(out.lines.size());
-        same.push_back(lineOfEdge[edge]);
-        out.lines.push_back({a, b});
-      }
-    }
-    out.line[k] = lineOfEdge[edge];
+    if (lineOfEdge[edge] != 0xffffffffu) continue;
+    lineOfEdge[edge] = 0;  // seen
+    const Operand& op = edge < subjectEdges ? subject : clip;
+    const std::uint32_t e = edge < subjectEdges ? edge : edge - subjectEdges;
+    const Point a = op.from(e), b = op.to(e);
+    uses.push_back({lexLess(a, b) ? a : b, lexLess(a, b) ? b : a, edge, static_cast<std::uint32_t>(uses.size())});
   }
+  std::vector<Use> byEnds = uses;
+  std::stable_sort(byEnds.begin(), byEnds.end(), [&](const Use& u, const Use& v) {
+    if (lexLess(u.lo, v.lo) || lexLess(v.lo, u.lo)) return lexLess(u.lo, v.lo);
+    if (lexLess(u.hi, v.hi) || lexLess(v.hi, u.hi)) return lexLess(u.hi, v.hi);
+    return u.order < v.order;
+  });
+  std::vector<std::uint32_t> firstOfSame(uses.size());  // by order: the first use with the same ends
+  for (std::size_t i = 0; i < byEnds.size(); ++i) {
+    const bool same = i > 0 && byEnds[i].lo == byEnds[i - 1].lo && byEnds[i].hi == byEnds[i - 1].hi;
+    firstOfSame[byEnds[i].order] = same ? firstOfSame[byEnds[i - 1].order] : byEnds[i].order;
+  }
+  for (const Use& u : uses) {
+    if (firstOfSame[u.order] == u.order) {
+      lineOfEdge[u.edge] = static_cast<std::uint32_t>(out.lines.size());
+      const Operand& op = u.edge < subjectEdges ? subject : clip;
+      const std::uint32_t e = u.edge < subjectEdges ? u.edge : u.edge - subjectEdges;
+      out.lines.push_back({op.from(e), op.to(e)});
+    } else {
+      lineOfEdge[u.edge] = lineOfEdge[uses[firstOfSame[u.order]].edge];
+    }
+  }
+  for (std::size_t k = 0; k < lines.size(); ++k) out.line[k] = lineOfEdge[lines[k] & ~kTracedCrossing];
   for (std::size_t r = 0; r + 1 < out.ringStart.size(); ++r) {
     const std::uint32_t first = out.ringStart[r], end = out.ringStart[r + 1];
     for (std::uint32_t k = first; k < end; ++k) {

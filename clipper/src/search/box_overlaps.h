@@ -22,7 +22,7 @@ inline bool overlap(const Box& a, const Box& b) {
 // Calls visit(a.id, b.id) once for every pair of overlapping boxes; sorts `boxes` by minX.
 template <class Visit>
 void forEachOverlappingPair(std::vector<Box>& boxes, Visit&& visit) {
-  std::sort(boxes.begin(), boxes.end(), [](const Box& a, const Box& b) {
+  std::stable_sort(boxes.begin(), boxes.end(), [](const Box& a, const Box& b) {
     return a.minX < b.minX || (a.minX == b.minX && a.id < b.id);
   });
   std::vector<const Box*> active;
