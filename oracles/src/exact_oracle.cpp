@@ -251,27 +251,25 @@ KPoint pointInside(Face f) {
   return KPoint(x0, (ys[best] + ys[best + 1]) / 2);
 }
 
-std::pair<double, double> roundingInterval(const FT& v, int k, int ulps);  // below
-
-// The double nearest to an exact rational (ties to the lower): what the tools print of an area.
-// (CGAL::to_double of a rational truncates.)
-double nearestOf(const EFT& v) {
+// The largest double <= v and the smallest >= v (equal when v is a double).
+std::pair<double, double> doublesAround(const EFT& v) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   double lo = CGAL::to_double(v);
   while (EFT(lo) > v) lo = std::nextafter(lo, -inf);
   while (EFT(std::nextafter(lo, inf)) <= v) lo = std::nextafter(lo, inf);
-  if (EFT(lo) == v) return lo;
-  const double hi = std::nextafter(lo, inf);
-  return v - EFT(lo) <= EFT(hi) - v ? lo : hi;
+  return {lo, EFT(lo) == v ? lo : std::nextafter(lo, inf)};
 }
 
-// The double nearest to an exact number (ties to the lower): a faithful rounding, which the
-// interval approximation's midpoint (CGAL::to_double of a lazy number) need not be.
+// The double nearest to an exact rational (ties to the lower): a faithful rounding, and what the
+// tools print of an area (CGAL::to_double of a rational truncates; of a lazy number it is an
+// interval's midpoint, which need not be either double around the value).
+double nearestOf(const EFT& v) {
+  const auto [lo, hi] = doublesAround(v);
+  return lo == hi || v - EFT(lo) <= EFT(hi) - v ? lo : hi;
+}
 double nearestDouble(const FT& v) {
-  const auto [lo, hi] = roundingInterval(v, 0, 1);
-  if (lo == hi) return lo;
-  const EFT& exact = CGAL::exact(v);
-  return exact - EFT(lo) <= EFT(hi) - exact ? lo : hi;
+  const auto& a = CGAL::approx(v);
+  return a.is_point() ? a.inf() : nearestOf(CGAL::exact(v));
 }
 
 // The boundary of the union of faces where `in` holds, as rings with the region on the left:
@@ -368,10 +366,7 @@ std::pair<double, double> roundingInterval(const FT& v, int k, int ulps) {
   } else {
     EFT exact = CGAL::exact(v);
     if (k != 0) exact *= powerOfTwo(-k);
-    lo = CGAL::to_double(exact);
-    while (EFT(lo) > exact) lo = std::nextafter(lo, -inf);
-    while (EFT(std::nextafter(lo, inf)) <= exact) lo = std::nextafter(lo, inf);
-    hi = EFT(lo) == exact ? lo : std::nextafter(lo, inf);
+    std::tie(lo, hi) = doublesAround(exact);
   }
   lo = stepDoubles(lo, -(ulps - 1)), hi = stepDoubles(hi, ulps - 1);
   if (k == 0) return {lo, hi};
