@@ -573,6 +573,31 @@ double boxAreaOf(const Region& subject, const Region& clip) {
   return (maxX / 2 - minX / 2) * (maxY / 2 - minY / 2) * 4;  // halves: no overflow near 1e308
 }
 
+// The areas of op(S, C), of answer j and of S and C over the bounded faces, in number type N
+// (certified intervals, or exact rationals), each face's area computed once; `each` sees every
+// face that lies in any of them, with whether op(S, C) and the answer hold it.
+template <class N>
+struct AreaSums {
+  N expected = 0, result = 0, subject = 0, clip = 0;
+};
+template <class N, class AreaOf, class Each>
+AreaSums<N> sumAreas(const Arrangement& arr, Op op, std::size_t j, AreaOf areaOf, Each each) {
+  AreaSums<N> sums;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (f->is_unbounded()) continue;  // outside everything: op(0, 0) = 0 for every op
+    const unsigned bits = f->data().bits;
+    const bool want = expectedInside(op, bits), have = resultInside(bits, j);
+    if (!want && !have && !(bits & (kS | kC))) continue;
+    const N area = areaOf(f);
+    if (bits & kS) sums.subject += area;
+    if (bits & kC) sums.clip += area;
+    if (want) sums.expected += area;
+    if (have) sums.result += area;
+    each(Face(f), want, have);
+  }
+  return sums;
+}
+
 // The judgement of answer j of an arrangement of S, C and the answers, on a problem already at
 // a comfortable scale (coordinates multiplied by 2^k, areas by 4^k), in two steps around the
 // rounding zones that every answer's wrong faces share: its areas and wrong faces first, then
@@ -588,23 +613,14 @@ AnswerJudgement judgeFaces(const Arrangement& arr, const Region& subject, const 
   AnswerJudgement a;
   a.start = std::chrono::steady_clock::now();
   ExactVerdict& v = a.v;
-  Interval expected = 0, got = 0, areaS = 0, areaC = 0;
-  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-    if (f->is_unbounded()) continue;  // outside everything: op(0, 0) = 0 for every op
-    const unsigned bits = f->data().bits;
-    const bool want = expectedInside(op, bits), have = resultInside(bits, j);
-    if (!want && !have && !(bits & (kS | kC))) continue;
-    const Interval area = faceAreaInterval(f);
-    if (bits & kS) areaS += area;
-    if (bits & kC) areaC += area;
-    if (want) expected += area;
-    if (have) got += area;
+  const AreaSums<Interval> sums = sumAreas<Interval>(arr, op, j, faceAreaInterval, [&](Face f, bool want, bool have) {
     if (want != have) a.wrongFaces.push_back(f);
-  }
+  });
+  const Interval &expected = sums.expected, &got = sums.result;
   v.expectedArea = CGAL::to_double(expected);
   v.resultArea = CGAL::to_double(got);
-  v.subjectArea = CGAL::to_double(areaS);
-  v.clipArea = CGAL::to_double(areaC);
+  v.subjectArea = CGAL::to_double(sums.subject);
+  v.clipArea = CGAL::to_double(sums.clip);
   v.boxArea = boxAreaOf(subject, clip);
   v.areaUncertainty = std::max(expected.sup() - expected.inf(), got.sup() - got.inf());
   v.faces = arr.number_of_faces();
@@ -647,22 +663,11 @@ void finish(AnswerJudgement& a, const Arrangement& arr, Op op, std::size_t j, co
   if (options.exactAreas) {
     // Each area the exact rational rounded once (a midpoint of an interval can be off by far
     // more than an ulp where slivers widen it).
-    EFT expected = 0, got = 0, areaS = 0, areaC = 0;
-    for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-      if (f->is_unbounded()) continue;
-      const unsigned bits = f->data().bits;
-      const bool want = expectedInside(op, bits), have = resultInside(bits, j);
-      if (!want && !have && !(bits & (kS | kC))) continue;
-      const EFT area = faceArea(f);
-      if (bits & kS) areaS += area;
-      if (bits & kC) areaC += area;
-      if (want) expected += area;
-      if (have) got += area;
-    }
-    v.expectedArea = nearestOf(expected);
-    v.resultArea = nearestOf(got);
-    v.subjectArea = nearestOf(areaS);
-    v.clipArea = nearestOf(areaC);
+    const AreaSums<EFT> sums = sumAreas<EFT>(arr, op, j, faceArea, [](Face, bool, bool) {});
+    v.expectedArea = nearestOf(sums.expected);
+    v.resultArea = nearestOf(sums.result);
+    v.subjectArea = nearestOf(sums.subject);
+    v.clipArea = nearestOf(sums.clip);
   }
   if (witnessFace) {
     const KPoint w = pointInside(*witnessFace);
